@@ -1,0 +1,36 @@
+// A loaded scene: image, camera, lights, materials and the flat list of primitives that
+// every renderer consumes (design §6). Objects keep which primitives they produced.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "modeling/camera.h"
+#include "modeling/light.h"
+#include "modeling/material.h"
+#include "modeling/primitive.h"
+
+namespace qacc {
+
+struct SceneObject {
+  std::string type;           // scene "type" of the object
+  std::size_t first = 0;      // first primitive
+  std::size_t count = 0;      // number of primitives
+};
+
+struct Scene {
+  std::string name = "scene";
+  std::string file;  // path it was loaded from (for messages)
+  int width = 640;
+  int height = 480;
+  Eigen::Vector3d background{0.05, 0.05, 0.08};  // linear RGB
+  Camera camera;
+  std::vector<Light> lights;        // never empty after loading (headlight + ambient default)
+  std::vector<Material> materials;  // index 0 is the default light grey
+  std::vector<Primitive> primitives;
+  std::vector<SceneObject> objects;
+
+  // Default lights when a scene gives none: a headlight along the view direction plus ambient.
+  static std::vector<Light> defaultLights(const Camera& camera);
+};
+
+}  // namespace qacc
