@@ -1,10 +1,12 @@
 // A loaded scene: image, camera, lights, materials and the flat list of primitives that
 // every renderer consumes (design §6). Objects keep which primitives they produced.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "modeling/camera.h"
+#include "modeling/exact_surface.h"
 #include "modeling/light.h"
 #include "modeling/material.h"
 #include "modeling/primitive.h"
@@ -15,6 +17,8 @@ struct SceneObject {
   std::string type;           // scene "type" of the object
   std::size_t first = 0;      // first primitive
   std::size_t count = 0;      // number of primitives
+  int material = 0;           // the object's material
+  int exact_surface = -1;     // index into Scene::exact_surfaces, or -1
 };
 
 struct Scene {
@@ -28,6 +32,9 @@ struct Scene {
   std::vector<Material> materials;  // index 0 is the default light grey
   std::vector<Primitive> primitives;
   std::vector<SceneObject> objects;
+  // Exact (non-quadric) surfaces the reference renderer draws instead of the pieces of the
+  // objects that refer to them (see exact_surface.h).
+  std::vector<std::shared_ptr<const ExactSurface>> exact_surfaces;
 
   // Default lights when a scene gives none: a headlight along the view direction plus ambient.
   static std::vector<Light> defaultLights(const Camera& camera);
