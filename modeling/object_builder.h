@@ -20,6 +20,7 @@ struct ObjectContext {
   std::string directory;      // directory of the scene file, for relative paths
   int material;               // the object's material index (from "material" or default)
   bool solid;                 // the object's "solid" flag
+  bool has_material = false;  // true when the object named its "material" explicitly
   std::string resolve(const std::string& path) const;  // relative → directory/path
 };
 
