@@ -1,0 +1,178 @@
+#include "raster/window_primitive.h"
+
+#include <cmath>
+#include <limits>
+
+namespace qacc {
+namespace {
+
+ScreenBox screen(int w, int h) { return {0, 0, w, h}; }
+
+// Pixel index range whose centres (i + 0.5) can lie in [lo, hi], widened by one pixel.
+void pixelRange(double lo, double hi, int n, int& i0, int& i1) {
+  const double a = std::floor(lo - 0.5) - 1.0;
+  const double b = std::ceil(hi - 0.5) + 2.0;  // exclusive
+  i0 = int(std::max(0.0, std::min(double(n), a)));
+  i1 = int(std::max(0.0, std::min(double(n), b)));
+}
+
+// Extent in u of {(u, v): P u² + 2 R u v + S v² + 2 T u + 2 U v + K >= 0}; false = unbounded.
+// Returns an empty range (lo > hi) when the region is empty.
+bool axisExtent(double P, double R, double S, double T, double U, double K, double& lo, double& hi) {
+  if (!(S < 0)) return false;  // unbounded in v for some u
+  // max over v is >= 0  <=>  (R² − P S) u² + 2 (R U − S T) u + (U² − S K) >= 0   (times −S > 0)
+  const double al = R * R - P * S, be = R * U - S * T, ga = U * U - S * K;
+  if (!(al < 0)) return false;
+  const double disc = be * be - al * ga;
+  if (disc < 0) {
+    lo = 1;
+    hi = 0;
+    return true;
+  }
+  const double s = std::sqrt(disc);
+  const double r1 = (-be + s) / al, r2 = (-be - s) / al;
+  lo = std::min(r1, r2);
+  hi = std::max(r1, r2);
+  return std::isfinite(lo) && std::isfinite(hi);
+}
+
+Eigen::Vector4d normalisedPlane(const Eigen::Vector4d& p) {
+  const double m = p.cwiseAbs().maxCoeff();
+  return m > 0 ? Eigen::Vector4d(p / m) : p;
+}
+
+}  // namespace
+
+Conic WindowPrimitive::contour() const {
+  const double a = Q(2, 2), bx = Q(0, 2), by = Q(1, 2), b0 = Q(2, 3);
+  Conic d;
+  d.A = bx * bx - a * Q(0, 0);
+  d.B = bx * by - a * Q(0, 1);
+  d.C = by * by - a * Q(1, 1);
+  d.D = bx * b0 - a * Q(0, 3);
+  d.E = by * b0 - a * Q(1, 3);
+  d.F = b0 * b0 - a * Q(3, 3);
+  return d;
+}
+
+ScreenBox conicBox(const Conic& d, int width, int height) {
+  ScreenBox box = screen(width, height);
+  double lo, hi;
+  if (axisExtent(d.A, d.B, d.C, d.D, d.E, d.F, lo, hi)) {
+    if (lo > hi) return {};
+    pixelRange(lo, hi, width, box.x0, box.x1);
+  }
+  if (axisExtent(d.C, d.B, d.A, d.E, d.D, d.F, lo, hi)) {
+    if (lo > hi) return {};
+    pixelRange(lo, hi, height, box.y0, box.y1);
+  }
+  return box;
+}
+
+ScreenBox polytopeBoxOnPlane(const std::vector<HalfSpace>& clip, int width, int height,
+                             const Eigen::Vector4d* plane) {
+  std::vector<Eigen::Vector4d> P;
+  for (const auto& h : clip) P.push_back(h.p);
+  P.push_back({-1, 0, 0, 0});
+  P.push_back({1, 0, 0, -double(width)});
+  P.push_back({0, -1, 0, 0});
+  P.push_back({0, 1, 0, -double(height)});
+  P.push_back({0, 0, -1, 0});
+  P.push_back({0, 0, 1, -1});
+  const std::size_t n = P.size();
+  double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
+  bool any = false;
+  auto feasible = [&](const Eigen::Vector3d& v) {
+    const Eigen::Vector4d X = v.homogeneous();
+    for (const auto& p : P) {
+      const double mag = std::abs(p[0] * X[0]) + std::abs(p[1] * X[1]) + std::abs(p[2] * X[2]) + std::abs(p[3]);
+      if (p.dot(X) > 1e-9 * mag) return false;
+    }
+    if (plane) {
+      const Eigen::Vector4d& q = *plane;
+      const double mag = std::abs(q[0] * X[0]) + std::abs(q[1] * X[1]) + std::abs(q[2] * X[2]) + std::abs(q[3]);
+      if (std::abs(q.dot(X)) > 1e-9 * mag) return false;
+    }
+    return true;
+  };
+  auto consider = [&](const Eigen::Vector4d& p, const Eigen::Vector4d& q, const Eigen::Vector4d& r) {
+    Eigen::Matrix3d A;
+    A << p.head<3>().transpose(), q.head<3>().transpose(), r.head<3>().transpose();
+    const double det = A.determinant();
+    const double scale = p.head<3>().norm() * q.head<3>().norm() * r.head<3>().norm();
+    if (!(std::abs(det) > 1e-12 * scale)) return;
+    const Eigen::Vector3d v = A.inverse() * Eigen::Vector3d(-p[3], -q[3], -r[3]);
+    if (!v.allFinite() || !feasible(v)) return;
+    any = true;
+    xmin = std::min(xmin, v.x());
+    xmax = std::max(xmax, v.x());
+    ymin = std::min(ymin, v.y());
+    ymax = std::max(ymax, v.y());
+  };
+  if (plane) {
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) consider(*plane, P[i], P[j]);
+  } else {
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        for (std::size_t k = j + 1; k < n; ++k) consider(P[i], P[j], P[k]);
+  }
+  if (!any) return {};
+  ScreenBox box;
+  pixelRange(xmin, xmax, width, box.x0, box.x1);
+  pixelRange(ymin, ymax, height, box.y0, box.y1);
+  return box;
+}
+
+ScreenBox polytopeBox(const std::vector<HalfSpace>& clip, int width, int height) {
+  return polytopeBoxOnPlane(clip, width, height, nullptr);
+}
+
+ScreenBox worldBoxToScreen(const Eigen::AlignedBox3d& wb, const Eigen::Matrix4d& M, int width, int height) {
+  if (wb.isEmpty()) return {};
+  double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector4d X = M * wb.corner(Eigen::AlignedBox3d::CornerType(i)).homogeneous();
+    if (!(X[3] > 0)) return screen(width, height);
+    xmin = std::min(xmin, X[0] / X[3]);
+    xmax = std::max(xmax, X[0] / X[3]);
+    ymin = std::min(ymin, X[1] / X[3]);
+    ymax = std::max(ymax, X[1] / X[3]);
+  }
+  ScreenBox box;
+  pixelRange(xmin, xmax, width, box.x0, box.x1);
+  pixelRange(ymin, ymax, height, box.y0, box.y1);
+  return box;
+}
+
+WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& Minv, int width, int height) {
+  WindowPrimitive w;
+  w.index = index;
+  w.solid = prim.solid;
+  w.material = prim.material;
+  w.object = prim.object;
+  const Quadric qw = prim.quadric.transformedByInverse(Minv).normalized();
+  w.Q = qw.Q;
+  w.clip.reserve(prim.clip.size());
+  for (const auto& h : prim.clip) {
+    const HalfSpace t = h.transformedByInverse(Minv);
+    w.clip.emplace_back(normalisedPlane(t.p), t.owns_boundary);
+  }
+  if (prim.isPlanar() && !prim.solid) {
+    // A plane f = p·X (times the weight) in world space: restrict the polytope to it.
+    const Eigen::Vector4d p(2 * prim.quadric.Q(0, 3), 2 * prim.quadric.Q(1, 3), 2 * prim.quadric.Q(2, 3),
+                            prim.quadric.Q(3, 3));
+    const Eigen::Vector4d pw = normalisedPlane(Minv.transpose() * p);
+    w.box = polytopeBoxOnPlane(w.clip, width, height, &pw);
+    return w;
+  }
+  const ScreenBox poly = polytopeBox(w.clip, width, height);
+  if (w.solid && !(w.a() > 0)) {
+    w.box = poly;  // caps can show where the line never meets the surface
+  } else {
+    w.box = conicBox(w.contour(), width, height).intersect(poly);
+  }
+  return w;
+}
+
+}  // namespace qacc

@@ -1,0 +1,12 @@
+// Subcommands of the qacc command line; each lives in its own file and registers itself
+// on the application (see qacc_main.cpp).
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace qacc {
+
+void addRenderCommand(CLI::App& app);
+void addBatchCommand(CLI::App& app);
+void addInfoCommand(CLI::App& app);
+
+}  // namespace qacc
