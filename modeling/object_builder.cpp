@@ -2,7 +2,11 @@
 
 #include <map>
 
+#include "modeling/algebraic_object.h"
+#include "modeling/molecule.h"
 #include "modeling/natural_objects.h"
+#include "modeling/revolution.h"
+#include "modeling/triangle_mesh.h"
 
 namespace qacc {
 namespace {
@@ -10,6 +14,7 @@ namespace {
 // The table of scene object types: one line per type (design §6). Keep it sorted.
 const std::map<std::string, ObjectBuilder>& registry() {
   static const std::map<std::string, ObjectBuilder> table = {
+      {"algebraic", buildAlgebraic},
       {"cone", buildCone},
       {"cylinder", buildCylinder},
       {"ellipsoid", buildEllipsoid},
@@ -20,10 +25,13 @@ const std::map<std::string, ObjectBuilder>& registry() {
       {"hyperboloid2", buildHyperboloid2},
       {"parabolic_cylinder", buildParabolicCylinder},
       {"paraboloid", buildParaboloid},
+      {"pdb", buildPdb},
       {"plane", buildPlane},
       {"quadric", buildQuadric},
+      {"revolution", buildRevolution},
       {"sphere", buildSphere},
       {"triangle", buildTriangle},
+      {"triangle_mesh", buildTriangleMesh},
   };
   return table;
 }

@@ -9,6 +9,7 @@
 
 #include "modeling/natural_quadrics.h"
 #include "modeling/object_builder.h"
+#include "modeling/placed_exact_surface.h"
 
 namespace qacc {
 namespace {
@@ -83,6 +84,13 @@ json parseJson(const std::string& text, const std::string& file) {
   };
   try {
     return json::parse(text, cb, /*allow_exceptions=*/true, /*ignore_comments=*/false);
+  } catch (const json::out_of_range& e) {
+    // Thrown by the lexer for numbers that overflow a double (e.g. 1e999); the value being
+    // read is the next one of the innermost open object or array.
+    std::string detail = e.what();
+    const auto pos = detail.find("] ");
+    if (pos != std::string::npos) detail = detail.substr(pos + 2);
+    throw SceneError(file, framesPath(frames, frames.size()), "number is not finite (" + detail + ")");
   } catch (const json::parse_error& e) {
     std::size_t line, col;
     lineColumn(text, e.byte, line, col);
@@ -279,6 +287,7 @@ void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::m
   std::vector<HalfSpace> clip;
   if (auto c = o.get("clip")) clip = readClip(*c);
 
+  const std::size_t exactBefore = scene.exact_surfaces.size();
   ObjectContext ctx{scene, directory, material, solid, has_material};
   std::vector<Primitive> prims;
   try {
@@ -295,6 +304,13 @@ void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::m
   so.first = scene.primitives.size();
   so.count = prims.size();
   so.material = material;
+  if (scene.exact_surfaces.size() > exactBefore) {
+    // The builder gave the object's true surface (exact_surface.h): place and clip it like the pieces.
+    so.exact_surface = int(scene.exact_surfaces.size()) - 1;
+    auto& es = scene.exact_surfaces.back();
+    if (transform.given || !clip.empty())
+      es = std::make_shared<PlacedExactSurface>(es, transform.given ? transform.M : Eigen::Matrix4d::Identity(), clip);
+  }
   for (Primitive& p : prims) {
     p.clip.insert(p.clip.end(), clip.begin(), clip.end());
     if (transform.given) p = p.transformed(transform.M);
