@@ -4,10 +4,15 @@
 #include <stdexcept>
 
 #include "raster/reference_renderer.h"
+#include "tools/hw_engine.h"
 
 namespace qacc {
 
-std::vector<std::string> engineNames() { return {"reference"}; }
+std::vector<std::string> engineNames() {
+  std::vector<std::string> names{"reference"};
+  for (const auto& n : hwEngineNames()) names.push_back(n);
+  return names;
+}
 
 EngineResult runEngine(const std::string& engine, const Scene& scene, const EngineOptions& options) {
   EngineResult r;
@@ -21,6 +26,7 @@ EngineResult runEngine(const std::string& engine, const Scene& scene, const Engi
                       " ms, " + std::to_string(st.pixel_tests) + " pixel tests");
     return r;
   }
+  if (runHwEngine(engine, scene, options, r)) return r;
   // --- further engines (hw, hw-cycle, facets) are dispatched above this line ---
   std::string names;
   for (const auto& n : engineNames()) names += (names.empty() ? "" : ", ") + n;

@@ -1,0 +1,135 @@
+// Fixed-point arithmetic of the accelerator's datapaths.
+//
+// A datapath value is a two's-complement integer `raw` of `width` bits; its real value is
+// raw · 2^-frac (for block-floating datapaths the per-primitive exponent chosen by the
+// setup unit is added on top). Every conversion to a narrower datapath goes through
+// `fit`, which saturates (or wraps) AND counts the event in an OverflowCounter, so an
+// overflow is never silent. Intermediate products are exact in 128-bit integers (a
+// hardware multiplier produces the full product; only the result register is narrowed).
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace qacc {
+
+using i128 = __int128;
+
+enum class Rounding { Truncate, Nearest, NearestEven };
+enum class OverflowMode { Saturate, Wrap };
+
+Rounding roundingFromString(const std::string& s);  // "truncate" | "nearest" | "nearest_even"
+OverflowMode overflowFromString(const std::string& s);  // "saturate" | "wrap"
+std::string toString(Rounding r);
+std::string toString(OverflowMode m);
+
+struct FixedFormat {
+  int width = 32;  // total bits, sign included (2..126)
+  int frac = 0;    // fraction bits (may exceed width for small values)
+  i128 maxRaw() const { return (i128(1) << (width - 1)) - 1; }
+  i128 minRaw() const { return -(i128(1) << (width - 1)); }
+};
+
+// Overflow events, one counter per datapath (see OverflowCounters in hw_stats.h).
+struct OverflowCounter {
+  std::uint64_t events = 0;
+};
+
+// Narrows an exact value to `width` bits with the given overflow mode, counting overflows.
+inline i128 fitWidth(i128 v, int width, OverflowMode mode, OverflowCounter& ovf) {
+  const i128 hi = (i128(1) << (width - 1)) - 1, lo = -(i128(1) << (width - 1));
+  if (v >= lo && v <= hi) return v;
+  ++ovf.events;
+  if (mode == OverflowMode::Saturate) return v > hi ? hi : lo;
+  const unsigned __int128 m = (unsigned __int128)v & (((unsigned __int128)1 << width) - 1);
+  const unsigned __int128 sign = (unsigned __int128)1 << (width - 1);
+  return (m & sign) ? i128(m) - (i128(1) << width) : i128(m);
+}
+
+// v · 2^-shift rounded with the given mode (shift >= 0); shift <= 0 multiplies exactly.
+inline i128 shiftRound(i128 v, int shift, Rounding r) {
+  if (shift <= 0) return v * (i128(1) << (-shift));
+  const i128 floorv = v >> shift;  // arithmetic: floor
+  if (r == Rounding::Truncate) return floorv;
+  const i128 rem = v - (floorv << shift);  // in [0, 2^shift)
+  const i128 half = i128(1) << (shift - 1);
+  if (rem > half) return floorv + 1;
+  if (rem < half) return floorv;
+  if (r == Rounding::Nearest) return floorv + 1;  // ties up
+  return (floorv & 1) ? floorv + 1 : floorv;       // ties to even
+}
+
+// Integer quotient num / den (den != 0) with the given rounding (Truncate = toward zero).
+inline i128 divRound(i128 num, i128 den, Rounding r) {
+  constexpr i128 k63 = i128(1) << 62;
+  if (num > -k63 && num < k63 && den > -k63 && den < k63) {  // 64-bit fast path, same result
+    long long n = (long long)num, d = (long long)den;
+    if (d < 0) {
+      n = -n;
+      d = -d;
+    }
+    const bool ng = n < 0;
+    const long long a = ng ? -n : n;
+    long long q = a / d;
+    const long long rem = a - q * d;
+    if (r != Rounding::Truncate) {
+      const long long twice = 2 * rem;
+      if (twice > d || (twice == d && (r == Rounding::Nearest || (q & 1)))) ++q;
+    }
+    return ng ? -q : q;
+  }
+  if (den < 0) {
+    num = -num;
+    den = -den;
+  }
+  const bool neg = num < 0;
+  const i128 n = neg ? -num : num;
+  i128 q = n / den;
+  const i128 rem = n - q * den;
+  if (r != Rounding::Truncate) {
+    const i128 twice = 2 * rem;
+    if (twice > den || (twice == den && (r == Rounding::Nearest || (q & 1)))) ++q;
+  }
+  return neg ? -q : q;
+}
+
+// Quantises a real number to raw = round(v · 2^scaleBits) (half away from zero, so that
+// quantise(-v) == -quantise(v): a plane and its opposite get exactly opposite
+// coefficients), then narrows it to `width` bits. Non-finite inputs saturate (counted).
+inline i128 quantize(double v, int scaleBits, int width, OverflowMode mode, OverflowCounter& ovf) {
+  const double lim = std::ldexp(1.0, width - 1);
+  if (!std::isfinite(v)) {
+    ++ovf.events;
+    return v > 0 ? (i128(1) << (width - 1)) - 1 : (std::isnan(v) ? 0 : -(i128(1) << (width - 1)));
+  }
+  const double s = std::round(std::ldexp(v, scaleBits));
+  if (!(std::fabs(s) < lim) || std::fabs(s) >= 1.0e37) {
+    ++ovf.events;
+    if (mode == OverflowMode::Saturate || std::fabs(s) >= 1.0e37)
+      return s > 0 ? (i128(1) << (width - 1)) - 1 : -(i128(1) << (width - 1));
+    return fitWidth(i128(s), width, mode, ovf);
+  }
+  return i128(s);
+}
+
+// Number of bits needed for |v| (0 for 0).
+inline int bitLength(i128 v) {
+  unsigned __int128 m = v < 0 ? (unsigned __int128)(-v) : (unsigned __int128)v;
+  int n = 0;
+  while (m) {
+    m >>= 1;
+    ++n;
+  }
+  return n;
+}
+
+// The exponent e such that |m| · 2^e < 2^(bits) with the least headroom: the block
+// exponent a setup unit chooses so that the largest value of a datapath uses its width.
+inline int blockExponent(double maxAbs, int bits) {
+  if (!(maxAbs > 0) || !std::isfinite(maxAbs)) return 0;
+  int ex;
+  std::frexp(maxAbs, &ex);  // maxAbs in [2^(ex-1), 2^ex)
+  return bits - ex;
+}
+
+}  // namespace qacc

@@ -1,0 +1,100 @@
+#include "hw_model/functional_engine.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "hw_model/depth_unit.h"
+#include "hw_model/hw_scene_setup.h"
+#include "hw_model/pixel_pipeline.h"
+#include "hw_model/traversal_unit.h"
+
+namespace qacc {
+
+namespace {
+constexpr int kTile = 32;
+}
+
+HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int W = scene.width, H = scene.height;
+  const int nt = threads > 0 ? threads : omp_get_max_threads();
+  HwRender out;
+  HwStats& st = out.stats;
+  st.engine = "hw";
+  st.config = cfg.name;
+  st.scene = scene.name;
+  st.width = W;
+  st.height = H;
+  st.threads = nt;
+  st.clock_mhz = cfg.clock_mhz;
+
+  const HwSceneSetup hs = HwSceneSetup::build(scene, cfg, nt);
+  st.overflow.add(hs.overflow);
+  st.primitives = hs.setups.size();
+  const int tx = (W + kTile - 1) / kTile, ty = (H + kTile - 1) / kTile;
+  std::vector<std::vector<int>> bins(std::size_t(tx) * std::size_t(ty));
+  for (const PrimitiveSetup& s : hs.setups) {
+    if (!s.visible) continue;
+    ++st.visible_primitives;
+    st.facet_primitives += s.facet;
+    for (int j = s.y0 / kTile; j <= (s.y1 - 1) / kTile; ++j)
+      for (int i = s.x0 / kTile; i <= (s.x1 - 1) / kTile; ++i) bins[std::size_t(j) * tx + i].push_back(s.index);
+  }
+
+  ZBufferState zb(W, H);
+  const int ntiles = tx * ty;
+  std::vector<PixelCounters> pc(static_cast<std::size_t>(ntiles));
+  std::vector<OverflowCounters> oc(static_cast<std::size_t>(ntiles));
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nt)
+  for (int t = 0; t < ntiles; ++t) {
+    const int tx0 = (t % tx) * kTile, ty0 = (t / tx) * kTile;
+    const int tx1 = std::min(W, tx0 + kTile), ty1 = std::min(H, ty0 + kTile);
+    PixelCounters& px = pc[std::size_t(t)];
+    OverflowCounters& ovf = oc[std::size_t(t)];
+    for (int k : bins[std::size_t(t)]) {
+      const PrimitiveSetup& s = hs.setups[std::size_t(k)];
+      PixelPipeline pp(s, cfg);
+      for (int y = std::max(ty0, s.y0); y < std::min(ty1, s.y1); ++y) {
+        Span sp[2];
+        const int n = TraversalUnit::spans(s, y, tx0, tx1, sp);
+        for (int i = 0; i < n; ++i) {
+          pp.startSpan(sp[i].x0 - s.x0, y - s.y0);
+          for (int x = sp[i].x0; x < sp[i].x1; ++x) {
+            ++px.tested;
+            const PixelOutcome o = pp.evaluate(ovf);
+            pp.stepRight();
+            px.clip_passes += std::uint64_t(o.clipPasses);
+            if (!o.hit) {
+              px.clipped += o.candidate;
+              continue;
+            }
+            ++px.covered;
+            px.caps += o.cap >= 0;
+            const std::size_t pix = std::size_t(y) * W + x;
+            const std::uint32_t z = DepthUnit::zbufferValue(o.z, cfg);
+            if (z < zb.z[pix]) {
+              zb.z[pix] = z;
+              zb.prim[pix] = k;
+              zb.depth[pix] = std::int64_t(o.z);
+              zb.cap[pix] = std::int16_t(o.cap);
+              ++px.written;
+            } else {
+              ++px.depth_rejected;
+            }
+          }
+        }
+      }
+    }
+  }
+  for (int t = 0; t < ntiles; ++t) {
+    st.pixels.add(pc[std::size_t(t)]);
+    st.overflow.add(oc[std::size_t(t)]);
+  }
+  out.fb = resolveFrame(scene, cfg, hs, zb, nt, st);
+  st.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace qacc

@@ -1,0 +1,58 @@
+#include "hw_model/hw_scene_setup.h"
+
+#include <omp.h>
+
+#include <limits>
+
+#include "hw_model/setup_unit.h"
+#include "raster/shading.h"
+
+namespace qacc {
+
+HwSceneSetup HwSceneSetup::build(const Scene& scene, const HwConfig& cfg, int threads) {
+  HwSceneSetup hs;
+  const int n = int(scene.primitives.size());
+  hs.setups.resize(std::size_t(n));
+  const Eigen::Matrix4d M = scene.camera.worldToWindow(scene.width, scene.height);
+  const Eigen::Matrix4d Minv = M.inverse();
+  std::vector<OverflowCounter> ovf(static_cast<std::size_t>(n));
+  const int nt = threads > 0 ? threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 16) num_threads(nt)
+  for (int i = 0; i < n; ++i) hs.setups[std::size_t(i)] = SetupUnit::run(scene, i, M, Minv, cfg, ovf[std::size_t(i)]);
+  for (const auto& o : ovf) hs.overflow.setup.events += o.events;
+  hs.lighting = LightingSetup::build(scene, cfg);
+  return hs;
+}
+
+ZBufferState::ZBufferState(int w, int h)
+    : width(w), height(h), z(std::size_t(w) * h, std::numeric_limits<std::uint32_t>::max()),
+      prim(std::size_t(w) * h, -1), depth(std::size_t(w) * h, 0), cap(std::size_t(w) * h, -1) {}
+
+FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const HwSceneSetup& hs, const ZBufferState& zb,
+                         int threads, HwStats& stats) {
+  FrameBuffer fb(scene.width, scene.height, toSrgb8(scene.background));
+  const int nt = threads > 0 ? threads : omp_get_max_threads();
+  const double lsb = std::ldexp(1.0, -cfg.zbuffer_bits);
+  std::uint64_t distinct = 0;
+  OverflowCounter ovf;
+#pragma omp parallel for schedule(dynamic, 8) num_threads(nt) reduction(+ : distinct)
+  for (int y = 0; y < scene.height; ++y) {
+    OverflowCounter local;
+    for (int x = 0; x < scene.width; ++x) {
+      const std::size_t pix = std::size_t(y) * scene.width + x;
+      const int p = zb.prim[pix];
+      if (p < 0) continue;
+      const PrimitiveSetup& s = hs.setups[std::size_t(p)];
+      const auto rgb = ShadingUnit::shade(s, hs.lighting, cfg, x - s.x0, y - s.y0, zb.depth[pix], zb.cap[pix], local);
+      for (int c = 0; c < 3; ++c) fb.color.data[pix * 3 + c] = rgb[std::size_t(c)];
+      fb.depth[pix] = (double(zb.z[pix]) + 0.5) * lsb;
+      fb.object[pix] = s.object;
+      fb.primitive[pix] = p;
+      ++distinct;
+    }
+  }
+  stats.distinct_written = distinct;
+  return fb;
+}
+
+}  // namespace qacc

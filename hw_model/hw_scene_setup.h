@@ -1,0 +1,40 @@
+// HwSceneSetup: the per-frame state both accelerator engines start from — the setup
+// unit's output for every primitive (PrimitiveSetup, computed once, in parallel, in scene
+// order) and the quantised lighting — plus the final shading pass that turns the
+// Z-buffer's winners into the frame buffer.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "hw_model/hw_config.h"
+#include "hw_model/hw_stats.h"
+#include "hw_model/primitive_setup.h"
+#include "hw_model/shading_unit.h"
+#include "modeling/scene.h"
+#include "raster/frame_buffer.h"
+
+namespace qacc {
+
+struct HwSceneSetup {
+  std::vector<PrimitiveSetup> setups;
+  LightingSetup lighting;
+  OverflowCounters overflow;  // setup overflows
+  static HwSceneSetup build(const Scene& scene, const HwConfig& cfg, int threads);
+};
+
+// What the Z-buffer holds per pixel at the end of the frame.
+struct ZBufferState {
+  int width = 0, height = 0;
+  std::vector<std::uint32_t> z;     // stored depth (UINT32_MAX = cleared)
+  std::vector<std::int32_t> prim;   // winning primitive (-1 = none)
+  std::vector<std::int64_t> depth;  // its depth in the internal format
+  std::vector<std::int16_t> cap;    // its cap plane (-1 = surface)
+  ZBufferState(int w, int h);
+  std::size_t size() const { return z.size(); }
+};
+
+// Shades the winners (ShadingUnit::shade) into a frame buffer; counts distinct pixels.
+FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const HwSceneSetup& hs, const ZBufferState& zb,
+                         int threads, HwStats& stats);
+
+}  // namespace qacc

@@ -1,0 +1,155 @@
+#include "hw_model/shading_unit.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hw_model/sqrt_unit.h"
+#include "raster/shading.h"
+
+namespace qacc {
+
+LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg) {
+  LightingSetup L;
+  OverflowCounter ovf;
+  const int cf = cfg.color_frac_bits, uf = cfg.unit_frac_bits;
+  int point = 0;
+  for (const Light& l : scene.lights) {
+    LightQ q;
+    q.type = l.type;
+    for (int k = 0; k < 3; ++k) q.color[k] = quantize(std::max(0.0, l.color[k]), cf, cf + 8, cfg.overflow, ovf);
+    if (l.type == Light::Type::Directional) {
+      const Eigen::Vector3d d = -l.direction.normalized();
+      for (int k = 0; k < 3; ++k) q.dir[k] = quantize(d[k], uf, uf + 2, cfg.overflow, ovf);
+    } else if (l.type == Light::Type::Point) {
+      q.point = point++;
+    }
+    L.lights.push_back(q);
+  }
+  std::vector<Material> mats = scene.materials;
+  if (mats.empty()) mats.emplace_back();
+  for (const Material& m : mats) {
+    MaterialQ q;
+    for (int k = 0; k < 3; ++k) q.color[k] = quantize(std::clamp(m.color[k], 0.0, 1.0), cf, cf + 2, cfg.overflow, ovf);
+    const int n = (1 << uf) + 1;
+    q.specular.resize(std::size_t(n));
+    for (int i = 0; i < n; ++i)
+      q.specular[std::size_t(i)] =
+          std::int32_t(std::lround(std::ldexp(m.specular * std::pow(std::ldexp(double(i), -uf), m.shininess), cf)));
+    L.materials.push_back(std::move(q));
+  }
+  const int ns = (1 << cf) + 1;
+  L.srgb.resize(std::size_t(ns));
+  for (int i = 0; i < ns; ++i) L.srgb[std::size_t(i)] = linearToSrgb8(std::ldexp(double(i), -cf));
+  return L;
+}
+
+void ShadingUnit::normalize(const i128 in[3], const HwConfig& cfg, i128 out[3]) {
+  int len = 0;
+  for (int k = 0; k < 3; ++k) len = std::max(len, bitLength(in[k]));
+  if (len == 0) {
+    out[0] = out[1] = out[2] = 0;
+    return;
+  }
+  const int nb = cfg.normal_bits, uf = cfg.unit_frac_bits, G = 8;
+  const int shift = len - (nb - 1);  // leading-zero normaliser
+  i128 n[3];
+  for (int k = 0; k < 3; ++k) n[k] = shift > 0 ? shiftRound(in[k], shift, cfg.rounding) : in[k] << (-shift);
+  const i128 len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  // Reciprocal square root: R = 2^(uf + G + nb - 1) / sqrt(len2 · 2^2G), then unit = n R >> (nb - 1).
+  const i128 root = i128(SqrtUnit::compute((unsigned __int128)(len2 << (2 * G))));
+  if (root == 0) {
+    out[0] = out[1] = out[2] = 0;
+    return;
+  }
+  const i128 R = divRound(i128(1) << (uf + G + nb - 1), root, cfg.rounding);
+  for (int k = 0; k < 3; ++k) out[k] = shiftRound(n[k] * R, nb - 1, cfg.rounding);
+}
+
+namespace {
+
+inline i128 evalField(const VectorSetup& f, int k, int u, int v, i128 z, int Fz) {
+  const LinearCoefficients& c = f.uv[k];
+  return ((c.A * u + c.B * v + c.C) << Fz) + f.cz[k] * z;
+}
+
+inline i128 dot(const i128 a[3], const i128 b[3], int uf, Rounding r) {
+  return shiftRound(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf, r);
+}
+
+}  // namespace
+
+std::array<std::uint8_t, 3> ShadingUnit::shade(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg,
+                                               int u, int v, i128 z, int cap, OverflowCounter& ovf) {
+  (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
+  const int Fz = cfg.depth_frac_bits, uf = cfg.unit_frac_bits, cf = cfg.color_frac_bits;
+  const Rounding rm = cfg.rounding;
+  i128 raw[3], N[3], V[3];
+  if (cap >= 0) {
+    for (int k = 0; k < 3; ++k) raw[k] = s.planes[std::size_t(cap)].capNormal[k];
+  } else {
+    for (int k = 0; k < 3; ++k) raw[k] = evalField(s.normal, k, u, v, z, Fz);
+  }
+  normalize(raw, cfg, N);
+  for (int k = 0; k < 3; ++k) raw[k] = evalField(s.view, k, u, v, z, Fz);
+  normalize(raw, cfg, V);
+  if (dot(N, V, uf, rm) < 0)
+    for (int k = 0; k < 3; ++k) N[k] = -N[k];  // two-sided
+  const int mi = s.material >= 0 && s.material < int(L.materials.size()) ? s.material : 0;
+  const LightingSetup::MaterialQ& m = L.materials[std::size_t(mi)];
+  const i128 one = i128(1) << uf;
+  i128 out[3] = {0, 0, 0};
+  for (const LightingSetup::LightQ& l : L.lights) {
+    if (l.type == Light::Type::Ambient) {
+      for (int k = 0; k < 3; ++k) out[k] += shiftRound(l.color[k] * m.color[k], cf, rm);
+      continue;
+    }
+    i128 Lv[3];
+    if (l.type == Light::Type::Directional) {
+      for (int k = 0; k < 3; ++k) Lv[k] = l.dir[k];
+    } else {
+      for (int k = 0; k < 3; ++k) raw[k] = evalField(s.pointLights[std::size_t(l.point)], k, u, v, z, Fz);
+      normalize(raw, cfg, Lv);
+    }
+    const i128 ndl = std::min(dot(N, Lv, uf, rm), one);
+    if (ndl <= 0) continue;
+    i128 H[3], hs[3];
+    for (int k = 0; k < 3; ++k) hs[k] = Lv[k] + V[k];
+    normalize(hs, cfg, H);
+    const i128 ndh = std::clamp<i128>(dot(N, H, uf, rm), 0, one);
+    const i128 spec = m.specular[std::size_t(ndh)];
+    for (int k = 0; k < 3; ++k) out[k] += shiftRound(l.color[k] * (shiftRound(m.color[k] * ndl, uf, rm) + spec), cf, rm);
+  }
+  std::array<std::uint8_t, 3> rgb;
+  const i128 top = i128(1) << cf;
+  for (int k = 0; k < 3; ++k) {
+    rgb[std::size_t(k)] = L.srgb[std::size_t(std::clamp<i128>(out[k], 0, top))];
+  }
+  return rgb;
+}
+
+bool ShadingUnit::tick(std::uint64_t now) {
+  bool changed = false;
+  while (!inflight_.empty() && inflight_.front().first <= now) {
+    writer_(ctx_, inflight_.front().second);
+    inflight_.pop_front();
+    changed = true;
+  }
+  if (now >= nextAccept_ && !in_.empty()) {
+    inflight_.emplace_back(now + std::uint64_t(cfg_.shading_latency), in_.front());
+    in_.pop();
+    nextAccept_ = now + std::uint64_t(cfg_.shading_cycles_per_pixel);
+    countItem();
+    changed = true;
+  }
+  if (changed || !inflight_.empty()) countBusy();
+  else countIdle();
+  return changed;
+}
+
+std::uint64_t ShadingUnit::nextEvent() const {
+  std::uint64_t t = inflight_.empty() ? Unit::nextEvent() : inflight_.front().first;
+  if (!in_.empty()) t = std::min(t, nextAccept_);
+  return t;
+}
+
+}  // namespace qacc

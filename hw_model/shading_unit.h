@@ -1,0 +1,75 @@
+// ShadingUnit: design §2 lighting in fixed point (ambient + Lambert + Blinn-Phong per
+// light, two-sided, material colour, 8-bit sRGB out), per visible pixel:
+//  - the normal N, the view vector V and point-light vectors L are affine fields in
+//    (u, v, z) (setup: PrimitiveSetup::normal/view/pointLights; a cap uses its plane's
+//    normal), evaluated exactly, then normalised: a leading-zero shift to normal_bits,
+//    then a reciprocal square root and three multiplies → unit vectors in 1.unit_frac;
+//  - dot products in 1.unit_frac; the specular power comes from a per-material table
+//    (ROM) indexed by N·H; colours in 0.color_frac; the sRGB transfer is a table indexed
+//    by the linear colour (color_frac bits).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "hw_model/fifo.h"
+#include "hw_model/hw_config.h"
+#include "hw_model/primitive_setup.h"
+#include "hw_model/unit.h"
+#include "modeling/scene.h"
+
+namespace qacc {
+
+// Per-scene lighting constants in the shading formats.
+struct LightingSetup {
+  struct LightQ {
+    Light::Type type = Light::Type::Ambient;
+    i128 color[3] = {0, 0, 0};  // 0.color_frac
+    i128 dir[3] = {0, 0, 0};    // directional: unit vector towards the light (1.unit_frac)
+    int point = -1;             // point light: index into PrimitiveSetup::pointLights
+  };
+  struct MaterialQ {
+    i128 color[3] = {0, 0, 0};
+    std::vector<std::int32_t> specular;  // ROM: specular · (i / 2^unit_frac)^shininess, 0.color_frac
+  };
+  std::vector<LightQ> lights;
+  std::vector<MaterialQ> materials;
+  std::vector<std::uint8_t> srgb;  // ROM: linear i / 2^color_frac → 8-bit sRGB
+  static LightingSetup build(const Scene& scene, const HwConfig& cfg);
+};
+
+// A pixel that passed the Z test, on its way to shading.
+struct ShadeRequest {
+  int prim = 0;
+  int x = 0, y = 0;
+  int cap = -1;
+  i128 z = 0;
+};
+
+class ShadingUnit : public Unit {
+ public:
+  static std::array<std::uint8_t, 3> shade(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg,
+                                           int u, int v, i128 z, int cap, OverflowCounter& ovf);
+  // Normalises an exact vector to a unit vector in 1.unit_frac (zero stays zero).
+  static void normalize(const i128 in[3], const HwConfig& cfg, i128 out[3]);
+
+  // Timing: pipelined, one pixel every shading_cycles_per_pixel, shading_latency deep;
+  // the colour is written to the frame buffer when the pixel leaves the unit.
+  using Writer = void (*)(void* ctx, const ShadeRequest& r);
+  ShadingUnit(const std::string& name, const HwConfig& cfg, Fifo<ShadeRequest>& in, Writer w, void* ctx)
+      : Unit(name), cfg_(cfg), in_(in), writer_(w), ctx_(ctx) {}
+  bool tick(std::uint64_t now) override;
+  std::uint64_t nextEvent() const override;
+  bool holdsWork() const override { return !inflight_.empty(); }
+
+ private:
+  const HwConfig& cfg_;
+  Fifo<ShadeRequest>& in_;
+  Writer writer_;
+  void* ctx_;
+  std::deque<std::pair<std::uint64_t, ShadeRequest>> inflight_;
+  std::uint64_t nextAccept_ = 0;
+};
+
+}  // namespace qacc
