@@ -3,6 +3,7 @@
 #include <map>
 
 #include "modeling/algebraic_object.h"
+#include "modeling/macropatch.h"
 #include "modeling/molecule.h"
 #include "modeling/natural_objects.h"
 #include "modeling/revolution.h"
@@ -23,6 +24,7 @@ const std::map<std::string, ObjectBuilder>& registry() {
       {"hyperbolic_paraboloid", buildHyperbolicParaboloid},
       {"hyperboloid1", buildHyperboloid1},
       {"hyperboloid2", buildHyperboloid2},
+      {"macropatch", buildMacropatch},
       {"parabolic_cylinder", buildParabolicCylinder},
       {"paraboloid", buildParaboloid},
       {"pdb", buildPdb},
