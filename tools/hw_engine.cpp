@@ -4,17 +4,23 @@
 #include <stdexcept>
 
 #include "hw_model/accuracy_report.h"
+#include "hw_model/cycle_engine.h"
 #include "hw_model/functional_engine.h"
 #include "raster/reference_renderer.h"
 
 namespace qacc {
 
-std::vector<std::string> hwEngineNames() { return {"hw"}; }
+std::vector<std::string> hwEngineNames() { return {"hw", "hw-cycle"}; }
 
 FrameBuffer renderWithHwEngine(const std::string& engine, const Scene& scene, const HwConfig& cfg, int threads,
                                HwStats& stats) {
   if (engine == "hw") {
     HwRender r = renderHw(scene, cfg, threads);
+    stats = r.stats;
+    return std::move(r.fb);
+  }
+  if (engine == "hw-cycle") {
+    HwRender r = renderHwCycle(scene, cfg, threads);
     stats = r.stats;
     return std::move(r.fb);
   }

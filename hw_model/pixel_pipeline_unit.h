@@ -1,0 +1,55 @@
+// PixelPipelineUnit: timing of one pixel pipeline (interpolators, square root, depth,
+// clip, caps; PixelPipeline holds the arithmetic). Fully pipelined: accepts one pixel per
+// cycle, or one every `clip passes` cycles when a primitive has more planes than the K
+// clip evaluators; results leave in order after pixelPipelineLatency() cycles; pixels
+// with a visible point go on to the Z-buffer, the others retire.
+#pragma once
+#include <deque>
+#include <memory>
+#include <vector>
+
+#include "hw_model/fifo.h"
+#include "hw_model/hw_config.h"
+#include "hw_model/pixel_pipeline.h"
+#include "hw_model/traversal_unit.h"
+#include "hw_model/unit.h"
+
+namespace qacc {
+
+struct ZRequest {
+  int prim = 0;
+  int x = 0, y = 0;
+  int cap = -1;
+  i128 z = 0;
+};
+
+class PixelPipelineUnit : public Unit {
+ public:
+  PixelPipelineUnit(const std::string& name, const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg,
+                    Fifo<PixelToken>& in, Fifo<ZRequest>& out, PixelCounters& px, OverflowCounters& ovf)
+      : Unit(name), setups_(setups), cfg_(cfg), in_(in), out_(out), px_(px), ovf_(ovf),
+        latency_(std::uint64_t(cfg.pixelPipelineLatency())) {}
+  bool tick(std::uint64_t now) override;
+  std::uint64_t nextEvent() const override;
+  bool holdsWork() const override { return !inflight_.empty(); }
+
+ private:
+  struct InFlight {
+    std::uint64_t ready;
+    bool hit;
+    ZRequest req;
+  };
+  const std::vector<PrimitiveSetup>& setups_;
+  const HwConfig& cfg_;
+  Fifo<PixelToken>& in_;
+  Fifo<ZRequest>& out_;
+  PixelCounters& px_;
+  OverflowCounters& ovf_;
+  std::uint64_t latency_;
+  std::deque<InFlight> inflight_;
+  std::uint64_t nextAccept_ = 0;
+  int currentPrim_ = -1;
+  std::unique_ptr<PixelPipeline> pipe_;
+};
+
+}  // namespace qacc
