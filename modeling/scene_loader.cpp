@@ -317,7 +317,9 @@ void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::m
     if (p.material == 0) p.material = material;
     p.solid = p.solid || solid;
     p.object = int(index);
-    if (!primitiveFinite(p)) o.fail("object produces non-finite coefficients (scale or transform too extreme)");
+    if (!primitiveFinite(p)) o.fail("object produces non-finite coefficients (sizes or scales too extreme)");
+    if (p.quadric.Q.topLeftCorner<3, 4>().isZero(0.0))
+      o.fail("object degenerates to a constant (sizes or scales too extreme for double precision)");
     scene.primitives.push_back(std::move(p));
   }
   scene.objects.push_back(so);

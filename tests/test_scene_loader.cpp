@@ -320,6 +320,8 @@ TEST(SceneLoader, BadInputIsRefusedWithPathAndProblem) {
               "/objects/0/transform/scale/1", "non-zero");
   expectError(sceneWith(R"({"type": "sphere", "radius": 1, "transform": {"scale": [1e-200, 1e-200, 1e-200]}})"),
               "/objects/0/transform/scale", "singular");
+  expectError(sceneWith(R"({"type": "sphere", "radius": 1e-200})"), "/objects/0", "non-finite coefficients");
+  expectError(sceneWith(R"({"type": "sphere", "radius": 1e300})"), "/objects/0", "degenerates to a constant");
   expectError(sceneWith(R"({"type": "sphere", "radius": 1, "transform": {"rotate": [0, 0, 0]}})"),
               "/objects/0/transform/rotate", "unknown key");
   expectError(sceneWith(R"({"type": "sphere", "radius": 1, "transform": {"translate": [0, 0, null]}})"),
@@ -372,6 +374,66 @@ TEST(SceneLoader, BadInputIsRefusedWithPathAndProblem) {
               "unknown style");
   expectError(second(R"({"type": "pdb", "file": "x.pdb", "style": "spacefill", "bond_radius": 0.2})"),
               "/objects/1/bond_radius", "ball_and_stick style only");
+}
+
+// Mutations of a valid scene (every value replaced by values of the wrong type, size or
+// sign; every key removed) either load or are refused with a SceneError naming the file:
+// never another exception, never a crash.
+TEST(SceneLoader, MutatedScenesNeverCrash) {
+  const std::string base = R"({"format": "qacc-scene/1", "name": "m",
+    "image": {"width": 64, "height": 48, "background": [0.1, 0.1, 0.1]},
+    "camera": {"type": "perspective", "eye": [0, -5, 2], "target": [0, 0, 0], "up": [0, 0, 1], "fov_y_deg": 40,
+               "near": 0.1, "far": 50},
+    "lights": [{"type": "directional", "direction": [0, 1, -1], "color": [1, 1, 1]}, {"type": "ambient"}],
+    "materials": {"red": {"color": [0.9, 0.1, 0.1], "specular": 0.3, "shininess": 16}},
+    "objects": [
+      {"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "red", "solid": true,
+       "clip": [[0, 0, 1, -0.5]], "transform": {"translate": [1, 0, 0], "rotate_deg": [0, 0, 30], "scale": [1, 2, 1]}},
+      {"type": "cone", "apex": [0, 0, 2], "base": [0, 0, 0], "radius": 0.5},
+      {"type": "paraboloid", "radii": [1, 2], "height": 1},
+      {"type": "hyperbolic_cylinder", "a": 0.5, "b": 0.5, "extent": 2, "height": 1},
+      {"type": "quadric", "matrix": [[1,0,0,0],[0,1,0,0],[0,0,-1,0],[0,0,0,0]]},
+      {"type": "triangle_mesh", "vertices": [[0,0,0],[1,0,0],[0,1,0]], "triangles": [[0,1,2]]}]})";
+  const nlohmann::json doc = nlohmann::json::parse(base);
+  const std::vector<nlohmann::json> replacements = {nullptr, "x", nlohmann::json::array(), nlohmann::json::object(),
+                                                    -1, 0, 1e308, 2.5, true, nlohmann::json::array({1, 2})};
+  // Every JSON pointer of the document.
+  std::vector<nlohmann::json::json_pointer> pointers;
+  const nlohmann::json flat = doc.flatten();
+  for (auto it = flat.begin(); it != flat.end(); ++it) {
+    nlohmann::json::json_pointer p(it.key());
+    while (!p.empty()) {
+      pointers.push_back(p);
+      p = p.parent_pointer();
+    }
+  }
+  int refused = 0, loaded = 0;
+  auto attempt = [&](const nlohmann::json& j) {
+    try {
+      parse(j.dump());
+      ++loaded;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.file(), "test.json");
+      ++refused;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "unexpected exception " << e.what() << " for " << j.dump();
+    }
+  };
+  for (const auto& p : pointers) {
+    for (const auto& r : replacements) {
+      nlohmann::json j = doc;
+      j[p] = r;
+      attempt(j);
+    }
+    nlohmann::json j = doc;  // remove the key or element
+    const auto parent = p.parent_pointer();
+    const std::string last = p.back();
+    if (j[parent].is_object()) j[parent].erase(last);
+    else j[parent].erase(std::size_t(std::stoul(last)));
+    attempt(j);
+  }
+  EXPECT_GT(refused, 500);
+  EXPECT_GT(loaded, 10);
 }
 
 TEST(SceneLoader, BadObjFileNamesItsLine) {
