@@ -7,12 +7,15 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <iterator>
+#include <set>
 #include <string>
 
 #include <unistd.h>
 
 #include "modeling/natural_quadrics.h"
 #include "modeling/object_builder.h"
+#include "modeling/quadric_type.h"
 #include "modeling/scene_loader.h"
 
 namespace fs = std::filesystem;
@@ -459,6 +462,51 @@ TEST(SceneLoader, ShippedScenesLoad) {
     }
   }
   EXPECT_GT(n, 0);
+}
+
+// The gallery holds the 9 non-degenerate real quadric types, each once, all solid and cut.
+TEST(SceneLoader, GalleryHasTheNineQuadricTypes) {
+  const Scene s = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json");
+  ASSERT_EQ(s.primitives.size(), 9u);
+  std::set<QuadricType> types;
+  for (const auto& p : s.primitives) {
+    const QuadricType t = quadricType(p.quadric);
+    EXPECT_TRUE(isNonDegenerate(t)) << quadricTypeName(t);
+    types.insert(t);
+    EXPECT_TRUE(p.solid);
+    EXPECT_FALSE(p.clip.empty());
+  }
+  EXPECT_EQ(types.size(), 9u);
+  EXPECT_EQ(s.width, 800);
+  EXPECT_EQ(s.height, 600);
+}
+
+// Each natural type of the scene format gives the quadric type its name promises.
+TEST(SceneLoader, NaturalTypesClassify) {
+  const Scene s = parse(sceneWith(R"(
+    {"type": "sphere", "radius": 2},
+    {"type": "ellipsoid", "radii": [1, 2, 3]},
+    {"type": "cylinder", "base": [0, 0, 0], "top": [1, 2, 3], "radius": 0.5},
+    {"type": "cone", "apex": [1, 1, 1], "base": [0, 0, 0], "radius": 0.5},
+    {"type": "paraboloid", "radii": [1, 2], "height": 2},
+    {"type": "hyperboloid1", "radii": [1, 1, 1], "height": 2},
+    {"type": "hyperboloid2", "radii": [1, 1, 0.5], "height": 3},
+    {"type": "hyperbolic_paraboloid", "a": 1, "b": 2, "extent": 1},
+    {"type": "elliptic_cylinder", "a": 1, "b": 0.5, "height": 2},
+    {"type": "hyperbolic_cylinder", "a": 0.5, "b": 0.5, "extent": 2, "height": 2},
+    {"type": "parabolic_cylinder", "p": 0.5, "extent": 2, "height": 2},
+    {"type": "plane", "normal": [1, 1, 0]},
+    {"type": "sphere", "radius": 1, "transform": {"translate": [3, 4, 5], "rotate_deg": [10, 20, 30], "scale": [1, 2, 3]}})"));
+  const QuadricType expected[] = {
+      QuadricType::Ellipsoid,           QuadricType::Ellipsoid,          QuadricType::EllipticCylinder,
+      QuadricType::EllipticCone,        QuadricType::EllipticParaboloid, QuadricType::HyperboloidOneSheet,
+      QuadricType::HyperboloidTwoSheets, QuadricType::HyperbolicParaboloid, QuadricType::EllipticCylinder,
+      QuadricType::HyperbolicCylinder,  QuadricType::ParabolicCylinder,  QuadricType::Plane,
+      QuadricType::Ellipsoid};
+  ASSERT_EQ(s.primitives.size(), std::size(expected));
+  for (std::size_t i = 0; i < s.primitives.size(); ++i)
+    EXPECT_EQ(quadricType(s.primitives[i].quadric), expected[i])
+        << i << ": " << quadricTypeName(quadricType(s.primitives[i].quadric));
 }
 
 // The command line refuses a bad scene with a non-zero status and a message naming the key.
