@@ -80,10 +80,22 @@ def main():
         "objects": [{"type": "sphere", "center": [round(x, 9) for x in c], "radius": round(r, 12),
                      "material": colors.get(level, "level3")} for c, r, level in spheres],
     }
-    lines = json.dumps({k: v for k, v in scene.items() if k != "objects"}, indent=2)[:-2]
+    # One line per top-level entry, material and object: readable and diff-friendly.
+    head = []
+    for k, v in scene.items():
+        if k == "objects":
+            continue
+        if k in ("lights", "materials"):
+            items = v.items() if isinstance(v, dict) else enumerate(v)
+            inner = ",\n".join("    " + (json.dumps(name) + ": " if isinstance(v, dict) else "") + json.dumps(x)
+                                for name, x in items)
+            open_, close = ("{", "}") if isinstance(v, dict) else ("[", "]")
+            head.append('  "%s": %s\n%s\n  %s' % (k, open_, inner, close))
+        else:
+            head.append("  %s: %s" % (json.dumps(k), json.dumps(v)))
     objs = ",\n".join("    " + json.dumps(o) for o in scene["objects"])
     with open(args.output, "w") as f:
-        f.write(lines + ',\n  "objects": [\n' + objs + "\n  ]\n}\n")
+        f.write("{\n" + ",\n".join(head) + ',\n  "objects": [\n' + objs + "\n  ]\n}\n")
     print("%s: %d spheres" % (args.output, len(spheres)))
 
 
