@@ -3,6 +3,7 @@
 #include <map>
 
 #include "modeling/algebraic_object.h"
+#include "modeling/bspline_object.h"
 #include "modeling/macropatch.h"
 #include "modeling/molecule.h"
 #include "modeling/natural_objects.h"
@@ -16,6 +17,7 @@ namespace {
 const std::map<std::string, ObjectBuilder>& registry() {
   static const std::map<std::string, ObjectBuilder> table = {
       {"algebraic", buildAlgebraic},
+      {"bspline", buildBspline},
       {"cone", buildCone},
       {"cylinder", buildCylinder},
       {"ellipsoid", buildEllipsoid},
