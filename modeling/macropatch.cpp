@@ -193,6 +193,22 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
     set(bf.cell, im, im, 0.5 * (a + b));
     set(bf.cell, im, ic, 0.5 * (ta + tb));
     set(bf.cell, ic, ic, -0.5 * (a + b));
+    if (!o.cross_boundary) continue;
+    // Cross-boundary derivative ∇f·ν on the face, affine, from shared data only: ν from the
+    // boundary triangle's points sorted (same on both sides), g_a·ν and g_b·ν at the corners,
+    // their mean at M and at Pc. Equal face values + equal ∇f·ν ⇒ the two macropatches'
+    // quadrics differ by μ p² on this face: G1 between macropatches.
+    std::array<Vector3d, 3> tri = {bf.pa, bf.pb, bf.pc};
+    std::sort(tri.begin(), tri.end(), [](const Vector3d& p, const Vector3d& q) { return keyOf(p) < keyOf(q); });
+    const Vector3d nu = (tri[1] - tri[0]).cross(tri[2] - tri[0]).normalized();
+    const double lmid = 0.5 * (ga.dot(nu) + gb.dot(nu));
+    const Eigen::Matrix4d Wt = BBQuadric::vertexMatrix(t).transpose().inverse();
+    for (const int iv : {im, ic}) {
+      Row r;
+      for (int bq = 0; bq < 4; ++bq) r.terms.push_back({10 * bf.cell + entryIndex(iv, bq), 2.0 * Wt.row(bq).head<3>().dot(nu)});
+      r.rhs = lmid;
+      rows.push_back(r);
+    }
   }
   // G1 (3.23) across every internal face.
   for (int s = 0; s < n; ++s)
@@ -217,7 +233,7 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
     for (const auto& tm : rows[r].terms) B(Eigen::Index(r), tm.first) += tm.second;
     d[Eigen::Index(r)] = rows[r].rhs;
   }
-  Eigen::JacobiSVD<MatrixXd> svd(B, Eigen::ComputeFullV | Eigen::ComputeThinU);
+  Eigen::BDCSVD<MatrixXd> svd(B, Eigen::ComputeFullV | Eigen::ComputeThinU);
   const double smax = svd.singularValues()[0];
   svd.setThreshold(1e-10);
   const int rank = int(svd.rank());
@@ -225,7 +241,9 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
   const double residual = (B * xp - d).norm() / std::max(1.0, d.norm());
   if (!(residual < 1e-8))
     throw std::invalid_argument("macropatch: the G1 constraints of control net " + std::to_string(patch) +
-                                " are inconsistent (residual " + std::to_string(residual) + ")");
+                                " are inconsistent (residual " + std::to_string(residual) + ")" +
+                                (o.cross_boundary ? "; this net does not admit G1 between macropatches, use G0 joins between them"
+                                                  : ""));
   (void)smax;
   const MatrixXd N = svd.matrixV().rightCols(unknowns - rank);
 
@@ -274,12 +292,15 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
   MatrixXd F = MatrixXd::Zero(Eigen::Index(fit.size()), unknowns);
   for (std::size_t r = 0; r < fit.size(); ++r)
     for (const auto& tm : fit[r].terms) F(Eigen::Index(r), tm.first) += tm.second;
-  const MatrixXd FN = F * N;
-  MatrixXd H = FN.transpose() * FN;
-  H.diagonal().array() += o.ridge * std::max(1.0, H.diagonal().maxCoeff());
-  const VectorXd rhs = -FN.transpose() * (F * xp) - o.ridge * std::max(1.0, H.diagonal().maxCoeff()) * (N.transpose() * xp);
-  const VectorXd y = H.ldlt().solve(rhs);
-  const VectorXd x = xp + N * y;
+  VectorXd x = xp;
+  if (N.cols() > 0) {
+    const MatrixXd FN = F * N;
+    MatrixXd H = FN.transpose() * FN;
+    const double ridge = o.ridge * std::max(1.0, H.diagonal().maxCoeff());
+    H.diagonal().array() += ridge;
+    const VectorXd rhs = -FN.transpose() * (F * xp) - ridge * (N.transpose() * xp);
+    x += N * H.ldlt().solve(rhs);
+  }
 
   for (int t = 0; t < n; ++t) {
     MacropatchCell c;
@@ -307,6 +328,13 @@ Vector3d bezierTriangleNormal(const ControlNet& P, double u, double v, double w)
 }
 
 std::vector<MacropatchCell> buildMacropatchCells(const std::vector<ControlNet>& nets, const MacropatchOptions& options) {
+  // The systems are small (~350 x 180): Eigen's OpenMP-parallel products only add
+  // synchronisation cost (seconds on a loaded machine), so run them on this thread.
+  struct SingleThreadedEigen {
+    int saved = Eigen::nbThreads();
+    SingleThreadedEigen() { Eigen::setNbThreads(1); }
+    ~SingleThreadedEigen() { Eigen::setNbThreads(saved); }
+  } single_threaded;
   std::vector<MacropatchCell> out;
   for (const auto& net : nets) checkNet(net);
   if (options.model == MacropatchModel::G0) {
@@ -430,6 +458,14 @@ std::vector<Primitive> buildMacropatch(const JsonNode& o, ObjectContext& ctx) {
   if (model == "G0") opt.model = MacropatchModel::G0;
   else if (model == "G1") opt.model = MacropatchModel::G1;
   else o.at("model").fail("expected \"G0\" (4 quadrics per net) or \"G1\" (18 quadrics per net)");
+  if (opt.model == MacropatchModel::G1) {
+    const std::string between = o.string("between", "G1");
+    if (between == "G1") opt.cross_boundary = true;
+    else if (between == "G0") opt.cross_boundary = false;
+    else o.at("between").fail("expected \"G1\" or \"G0\" (continuity between macropatches)");
+  } else if (o.has("between")) {
+    o.at("between").fail("the G0 model joins macropatches with G0 only");
+  }
   if (opt.model == MacropatchModel::G0) {
     opt.apex = o.number("apex", opt.apex);
     opt.corner_apex = o.number("corner_apex", opt.corner_apex);

@@ -47,9 +47,15 @@
 //   The remaining freedom is fixed by a least-squares fit to the quadratic Bézier triangle
 //   of the same net (f = 0 and ∇f ⟂ the Bézier tangents at sample points, each sample in
 //   the tetrahedron that contains it) plus a tiny ridge term; the constraints are solved
-//   exactly in their null space (SVD). G1 between macropatches is not imposed (the thesis
-//   notes it is very constrained); the shared corner normals make it exact at the corners
-//   and the measured angle along the boundaries is reported (measureMacropatchContinuity).
+//   exactly in their null space (SVD).
+//   Between macropatches ("between": "G1", the default; the thesis notes it is very
+//   constrained): the cross-boundary derivative ∇f·ν on each boundary face is also imposed
+//   from shared data (ν from the sorted boundary points, g_a·ν and g_b·ν at the corners,
+//   their mean at M and Pc), so both sides' quadrics differ by μ p² there: G1 across. On
+//   symmetric nets (the octahedron) this determines all 180 coefficients and is consistent;
+//   on general nets it is inconsistent and the build refuses with a message — use
+//   "between": "G0" (boundary values only, the free coefficients fitted; corner normals
+//   still shared, so G1 holds at the corners; the angle along boundaries is measured).
 #pragma once
 #include <array>
 #include <string>
@@ -82,6 +88,9 @@ struct MacropatchOptions {
   int fit_samples = 12;
   double normal_weight = 1.0;
   double ridge = 1e-8;
+  // G1: also impose the cross-boundary derivative on boundary faces from shared data
+  // (G1 between macropatches).
+  bool cross_boundary = true;
 };
 
 struct MacropatchCell {
@@ -114,8 +123,8 @@ MacropatchContinuity measureMacropatchContinuity(const std::vector<MacropatchCel
 std::vector<ControlNet> namedControlNets(const std::string& name, double radius = 1.0);
 
 // Scene builder for "macropatch": {"control_nets": [[[x,y,z] x 6], ...] | "surface": NAME,
-// "radius": r (named surfaces), "model": "G0" | "G1", "apex", "corner_apex", "control_apex"
-// (G0 constants)}.
+// "radius": r (named surfaces), "model": "G0" | "G1", "between": "G1" | "G0" (G1 model only),
+// "apex", "corner_apex", "control_apex" (G0 constants)}.
 std::vector<Primitive> buildMacropatch(const JsonNode& o, ObjectContext& ctx);
 
 // Tessellation of the nets' quadratic Bézier triangles into n² triangles each (vertices
