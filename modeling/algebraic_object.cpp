@@ -21,7 +21,8 @@ Eigen::AlignedBox3d readBox(const JsonNode& n) {
 
 }  // namespace
 
-std::vector<Primitive> buildAlgebraic(const JsonNode& o, ObjectContext& ctx) {
+AlgebraicSpec readAlgebraicSpec(const JsonNode& o) {
+  AlgebraicSpec spec;
   std::map<std::string, double> params;
   if (auto p = o.get("params")) {
     if (!p->isObject()) p->fail("params must be an object of named numbers");
@@ -32,30 +33,34 @@ std::vector<Primitive> buildAlgebraic(const JsonNode& o, ObjectContext& ctx) {
     }
   }
   const JsonNode polyNode = o.at("poly");
-  Polynomial3 f;
   try {
-    f = Polynomial3::parse(polyNode.string(), params);
+    spec.f = Polynomial3::parse(polyNode.string(), params);
   } catch (const PolynomialParseError& e) {
     polyNode.fail(e.what());
   }
-  if (f.degree() < 1) polyNode.fail("the polynomial is constant: it has no surface");
-  if (f.degree() > 16) polyNode.fail("degree " + std::to_string(f.degree()) + " is above the supported 16");
-  const Eigen::AlignedBox3d box = readBox(o.at("box"));
+  if (spec.f.degree() < 1) polyNode.fail("the polynomial is constant: it has no surface");
+  if (spec.f.degree() > 16) polyNode.fail("degree " + std::to_string(spec.f.degree()) + " is above the supported 16");
+  spec.box = readBox(o.at("box"));
 
-  DegreeReductionOptions opt;
+  DegreeReductionOptions& opt = spec.options;
   if (auto l = o.get("level")) opt.level = int(l->integer(1, 256));
   if (auto r = o.get("refine_error")) opt.refine_error = r->positive();
   if (auto m = o.get("max_level")) opt.max_level = int(m->integer(1, 256));
   opt.smooth = o.boolean("smooth", false);
   opt.merge = o.boolean("merge", false);
   opt.cull = o.boolean("cull", true);
-  opt.material = ctx.material;
   const std::string reference = o.string("reference", "exact");
   if (reference != "exact" && reference != "pieces")
     o.at("reference").fail("reference must be \"exact\" or \"pieces\"");
+  spec.exact_reference = reference == "exact";
+  return spec;
+}
 
-  DegreeReductionResult r = reduceAlgebraic(f, box, opt);
-  if (reference == "exact") ctx.scene.exact_surfaces.push_back(std::make_shared<AlgebraicSurface>(f, box));
+std::vector<Primitive> buildAlgebraic(const JsonNode& o, ObjectContext& ctx) {
+  AlgebraicSpec spec = readAlgebraicSpec(o);
+  spec.options.material = ctx.material;
+  DegreeReductionResult r = reduceAlgebraic(spec.f, spec.box, spec.options);
+  if (spec.exact_reference) ctx.scene.exact_surfaces.push_back(std::make_shared<AlgebraicSurface>(spec.f, spec.box));
   return std::move(r.primitives);
 }
 

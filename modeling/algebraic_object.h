@@ -16,9 +16,20 @@
 #pragma once
 #include <vector>
 
+#include "modeling/degree_reduction_model.h"
 #include "modeling/object_builder.h"
+#include "modeling/polynomial3.h"
 
 namespace qacc {
+
+// The keys of an "algebraic" object, validated (for the builder and the study command).
+struct AlgebraicSpec {
+  Polynomial3 f;
+  Eigen::AlignedBox3d box;
+  DegreeReductionOptions options;
+  bool exact_reference = true;  // "reference": "exact"
+};
+AlgebraicSpec readAlgebraicSpec(const JsonNode& o);
 
 std::vector<Primitive> buildAlgebraic(const JsonNode& o, ObjectContext& ctx);
 

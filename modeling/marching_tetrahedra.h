@@ -1,0 +1,37 @@
+// Marching tetrahedra (design §3.3, §5): a triangle mesh of the algebraic surface f = 0
+// inside a box, on the same conforming Kuhn mesh as the degree reduction, so that quadric
+// pieces and facets can be compared on equal terms (count vs geometric error). Vertices lie
+// on the surface (bisection of f along each sign-changing edge, shared by the tetrahedra
+// around the edge, so the mesh is watertight inside the box); triangles are oriented with
+// their normal along ∇f.
+#pragma once
+#include <array>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "modeling/polynomial3.h"
+
+namespace qacc {
+
+struct TriangleSoup {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+TriangleSoup marchingTetrahedra(const Polynomial3& f, const Eigen::AlignedBox3d& box, int level);
+
+// Sampled two-sided distance between the triangles and f = 0 inside the box:
+//  - triangles → surface: Newton projection along ∇f of each triangle's centroid and edge
+//    midpoints;
+//  - surface → triangles: exact distance from points of f = 0 (roots along axis-parallel
+//    lines of a 40 x 40 grid per axis, Bernstein isolation) to the nearest triangle among
+//    those within one bucket (box / 16 per axis) around it; a point with no triangle that
+//    close (a sheet the mesh misses) counts as infinitely far.
+struct FacetError {
+  double max = 0, mean = 0;
+  int samples = 0;
+};
+FacetError facetError(const Polynomial3& f, const TriangleSoup& mesh, const Eigen::AlignedBox3d& box);
+
+}  // namespace qacc
