@@ -286,14 +286,15 @@ std::vector<Primitive> buildPdb(const JsonNode& o, ObjectContext& ctx) {
   } catch (const std::runtime_error& e) {
     fileNode.fail(e.what());
   }
+  if (mol.atoms.empty()) fileNode.fail("no ATOM/HETATM records in " + path);
   if (!waters) {
     std::vector<Atom> kept;
     for (const auto& a : mol.atoms)
       if (a.residue != "HOH" && a.residue != "WAT" && a.residue != "DOD") kept.push_back(a);
     mol.atoms = std::move(kept);
     mol.bonds = inferBonds(mol.atoms);
+    if (mol.atoms.empty()) o.at("waters").fail("every atom of " + path + " belongs to a water molecule");
   }
-  if (mol.atoms.empty()) fileNode.fail("no ATOM/HETATM records in " + path);
   if (center) {
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
     for (const auto& a : mol.atoms) c += a.position;

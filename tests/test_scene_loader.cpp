@@ -262,6 +262,16 @@ TEST(SceneLoader, PdbObjectAddsElementMaterials) {
   for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(s.primitives[7 + k].material, 0);
   // Spacefill oxygen: van der Waals radius 1.52 Å.
   EXPECT_NEAR(s.primitives[7].quadric.eval({1.52, 0, 0}), 0, 1e-12);
+
+  // center: the centroid moves to the origin; waters: false drops HOH (nothing left here).
+  const Scene c = parse(sceneWith(R"({"type": "pdb", "file": "water.pdb", "style": "spacefill", "center": true,
+                                      "atom_scale": 0.5})"));
+  const Eigen::Vector3d centroid = Eigen::Vector3d(0.957 - 0.240, 0.927, 0) / 3;
+  EXPECT_NEAR(c.primitives[0].quadric.eval(-centroid + Eigen::Vector3d(0.76, 0, 0)), 0, 1e-9);
+  expectError(sceneWith(R"({"type": "pdb", "file": "water.pdb", "waters": false})"), "/objects/0/waters",
+              "belongs to a water molecule");
+  writeFile(tempDir() / "empty.pdb", "REMARK nothing\nEND\n");
+  expectError(sceneWith(R"({"type": "pdb", "file": "empty.pdb"})"), "/objects/0/file", "no ATOM/HETATM records");
 }
 
 TEST(SceneLoader, BadInputIsRefusedWithPathAndProblem) {
