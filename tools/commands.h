@@ -8,5 +8,6 @@ namespace qacc {
 void addRenderCommand(CLI::App& app);
 void addBatchCommand(CLI::App& app);
 void addInfoCommand(CLI::App& app);
+void addReduceCommand(CLI::App& app);
 
 }  // namespace qacc
