@@ -5,6 +5,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "modeling/natural_quadrics.h"
+
 namespace qacc {
 
 namespace {
@@ -130,6 +132,76 @@ void buildG0(const ControlNet& P, int patch, const MacropatchOptions& o, std::ve
     checkCell(c.bb.V);
     out.push_back(c);
   }
+}
+
+// G0 constants fitted to the net's Bézier triangle: f is affine in (apex, corner_apex,
+// control_apex), so f = 0 and ∇f ⟂ Bézier tangents at sample points is a 3-unknown linear
+// least-squares problem; constants that come out negative are fixed at 0 and the rest
+// refitted (>= 0 keeps the surface off the outer faces).
+MacropatchOptions fitG0Constants(const ControlNet& P, const MacropatchOptions& o) {
+  auto cellsWith = [&](double a, double c, double t) {
+    MacropatchOptions k = o;
+    k.apex = a;
+    k.corner_apex = c;
+    k.control_apex = t;
+    std::vector<MacropatchCell> cells;
+    buildG0(P, 0, k, cells);
+    return cells;
+  };
+  const auto base = cellsWith(0, 0, 0);
+  const std::array<std::vector<MacropatchCell>, 3> unit = {cellsWith(1, 0, 0), cellsWith(0, 1, 0), cellsWith(0, 0, 1)};
+  std::vector<Eigen::Matrix4d> W;
+  for (const auto& c : base) W.push_back(BBQuadric::vertexMatrix(c.bb.V).transpose().inverse());
+  std::vector<std::array<double, 4>> rows;  // 3 coefficients + constant term
+  const int k = std::max(2, o.fit_samples);
+  for (int i = 0; i <= k; ++i)
+    for (int j = 0; i + j <= k; ++j) {
+      const double u = double(i) / k, v = double(j) / k, w = 1.0 - u - v;
+      const Vector3d X = bezierTrianglePoint(P, u, v, w);
+      const Vector3d Bu = 2 * (u * P[0] + v * P[1] + w * P[5]), Bv = 2 * (v * P[2] + u * P[1] + w * P[3]),
+                     Bw = 2 * (w * P[4] + v * P[3] + u * P[5]);
+      int best = -1;
+      double bestMin = -1e-9;
+      for (std::size_t t = 0; t < base.size(); ++t) {
+        const double m = (W[t] * X.homogeneous()).minCoeff();
+        if (m > bestMin) bestMin = m, best = int(t);
+      }
+      if (best < 0) continue;
+      const std::size_t b = std::size_t(best);
+      auto value = [&](const BBQuadric& bb) { return bb.toQuadric().eval(X); };
+      auto slope = [&](const BBQuadric& bb, const Vector3d& tv) { return o.normal_weight * bb.toQuadric().gradient(X).dot(tv); };
+      const double f0 = value(base[b].bb);
+      rows.push_back({value(unit[0][b].bb) - f0, value(unit[1][b].bb) - f0, value(unit[2][b].bb) - f0, f0});
+      for (const Vector3d& tv : {Vector3d(Bu - Bw), Vector3d(Bv - Bw)}) {
+        const double g0 = slope(base[b].bb, tv);
+        rows.push_back({slope(unit[0][b].bb, tv) - g0, slope(unit[1][b].bb, tv) - g0, slope(unit[2][b].bb, tv) - g0, g0});
+      }
+    }
+  std::array<bool, 3> active = {true, true, true};
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  for (int round = 0; round < 3; ++round) {
+    Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    for (const auto& r : rows)
+      for (int a = 0; a < 3; ++a) {
+        if (!active[std::size_t(a)]) continue;
+        g[a] -= r[std::size_t(a)] * r[3];
+        for (int c = 0; c < 3; ++c)
+          if (active[std::size_t(c)]) H(a, c) += r[std::size_t(a)] * r[std::size_t(c)];
+      }
+    for (int a = 0; a < 3; ++a)
+      if (!active[std::size_t(a)]) H(a, a) = 1.0, g[a] = 0.0;
+    x = H.ldlt().solve(g);
+    bool changed = false;
+    for (int a = 0; a < 3; ++a)
+      if (active[std::size_t(a)] && !(x[a] >= 0)) active[std::size_t(a)] = false, changed = true;
+    if (!changed) break;
+  }
+  MacropatchOptions fitted = o;
+  fitted.apex = std::max(0.0, x[0]);
+  fitted.corner_apex = std::max(0.0, x[1]);
+  fitted.control_apex = std::max(0.0, x[2]);
+  return fitted;
 }
 
 // ---- G1: 18 cells, exact constraints + fit -------------------------------------------------
@@ -340,7 +412,8 @@ std::vector<MacropatchCell> buildMacropatchCells(const std::vector<ControlNet>& 
   if (options.model == MacropatchModel::G0) {
     if (options.apex < 0 || options.corner_apex < 0 || options.control_apex < 0)
       throw std::invalid_argument("macropatch: G0 apex coefficients must be >= 0 (else the surface leaves its cells)");
-    for (std::size_t i = 0; i < nets.size(); ++i) buildG0(nets[i], int(i), options, out);
+    for (std::size_t i = 0; i < nets.size(); ++i)
+      buildG0(nets[i], int(i), options.fit_g0 ? fitG0Constants(nets[i], options) : options, out);
   } else {
     const auto corners = cornerData(nets);
     for (std::size_t i = 0; i < nets.size(); ++i) buildG1(nets[i], int(i), corners, options, out);
@@ -455,9 +528,22 @@ std::vector<Primitive> buildMacropatch(const JsonNode& o, ObjectContext& ctx) {
   }
   MacropatchOptions opt;
   const std::string model = o.string("model", "G0");
+  if (model == "bezier") {
+    // The same control nets as quadratic Bézier triangles, tessellated (for comparisons).
+    const int n = int(o.has("tessellation") ? o.at("tessellation").integer(1, 256) : 8);
+    const BezierMesh mesh = tessellateBezierTriangles(nets, n);
+    std::vector<Primitive> tris;
+    for (const auto& t : mesh.triangles) {
+      const Vector3d &a = mesh.vertices[std::size_t(t[0])], &b = mesh.vertices[std::size_t(t[1])],
+                     &c = mesh.vertices[std::size_t(t[2])];
+      if ((b - a).cross(c - a).norm() > 0) tris.push_back(makeTriangle(a, b, c));
+    }
+    return tris;
+  }
+  if (o.has("tessellation")) o.at("tessellation").fail("only the \"bezier\" model is tessellated");
   if (model == "G0") opt.model = MacropatchModel::G0;
   else if (model == "G1") opt.model = MacropatchModel::G1;
-  else o.at("model").fail("expected \"G0\" (4 quadrics per net) or \"G1\" (18 quadrics per net)");
+  else o.at("model").fail("expected \"G0\" (4 quadrics per net), \"G1\" (18 quadrics per net) or \"bezier\" (triangles)");
   if (opt.model == MacropatchModel::G1) {
     const std::string between = o.string("between", "G1");
     if (between == "G1") opt.cross_boundary = true;
@@ -467,6 +553,7 @@ std::vector<Primitive> buildMacropatch(const JsonNode& o, ObjectContext& ctx) {
     o.at("between").fail("the G0 model joins macropatches with G0 only");
   }
   if (opt.model == MacropatchModel::G0) {
+    opt.fit_g0 = !(o.has("apex") || o.has("corner_apex") || o.has("control_apex"));
     opt.apex = o.number("apex", opt.apex);
     opt.corner_apex = o.number("corner_apex", opt.corner_apex);
     opt.control_apex = o.number("control_apex", opt.control_apex);

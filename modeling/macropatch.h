@@ -20,9 +20,9 @@
 //     (the face (Pa, Pc, Pb) then holds exactly the quadratic Bézier boundary curve
 //     (1-t)² Pa + 2t(1-t) Pc + t² Pb, shared with the neighbouring macropatch, hence G0
 //     between macropatches); apex A: `apex`; corner-apex edges: `corner_apex`;
-//     control-apex edges: `control_apex` (defaults 1/6, 1/6, 1/2; all >= 0 keeps the surface
-//     off the two outer faces (Pa, Pc, A), (Pc, Pb, A), whose coefficients are then >= 0 and
-//     vanish only at the corner).
+//     control-apex edges: `control_apex` (defaults 1/6, 1/6, 1/2, or fitted per net to the
+//     Bézier triangle with fit_g0; all >= 0 keeps the surface off the two outer faces
+//     (Pa, Pc, A), (Pc, Pb, A), whose coefficients are then >= 0 and vanish only at the corner).
 //   Inside the macropatch the 3 shared faces (Pa, Pb, A) get equal coefficients: G0.
 //
 // Model "G1" (18 quadrics, Powell-Sabin split; digest's reading):
@@ -84,6 +84,10 @@ struct MacropatchOptions {
   double apex = 1.0 / 6.0;
   double corner_apex = 1.0 / 6.0;
   double control_apex = 0.5;
+  // G0: fit the three constants per net to its Bézier triangle instead (least squares on
+  // f = 0 and tangency at sample points, constants kept >= 0). The scene builder fits
+  // unless one of the constants is given.
+  bool fit_g0 = false;
   // G1 fit: samples per Bézier triangle edge, weight of the normal equations, ridge term.
   int fit_samples = 12;
   double normal_weight = 1.0;
@@ -123,8 +127,9 @@ MacropatchContinuity measureMacropatchContinuity(const std::vector<MacropatchCel
 std::vector<ControlNet> namedControlNets(const std::string& name, double radius = 1.0);
 
 // Scene builder for "macropatch": {"control_nets": [[[x,y,z] x 6], ...] | "surface": NAME,
-// "radius": r (named surfaces), "model": "G0" | "G1", "between": "G1" | "G0" (G1 model only),
-// "apex", "corner_apex", "control_apex" (G0 constants)}.
+// "radius": r (named surfaces), "model": "G0" | "G1" | "bezier", "between": "G1" | "G0" (G1
+// model only), "apex", "corner_apex", "control_apex" (G0 constants; fitted when absent),
+// "tessellation": n (bezier: the nets' quadratic Bézier triangles as n² triangles each)}.
 std::vector<Primitive> buildMacropatch(const JsonNode& o, ObjectContext& ctx);
 
 // Tessellation of the nets' quadratic Bézier triangles into n² triangles each (vertices

@@ -23,6 +23,7 @@ MacropatchOptions opts(MacropatchModel m, bool cross = false) {
   MacropatchOptions o;
   o.model = m;
   o.cross_boundary = cross;
+  o.fit_g0 = true;  // as the scene builder does by default
   return o;
 }
 
@@ -284,4 +285,8 @@ TEST(Macropatch, SceneErrors) {
                               "inline.json", ".");
   EXPECT_GT(ok.primitives.size(), 0u);
   EXPECT_LE(ok.primitives.size(), 18u);
+  const Scene tri = parseScene(head + R"("surface": "octahedron", "model": "bezier", "tessellation": 4}]})", "inline.json", ".");
+  EXPECT_EQ(tri.primitives.size(), 8u * 16u);
+  for (const auto& p : tri.primitives) EXPECT_TRUE(p.isPlanar());
+  fails(R"("surface": "octahedron", "model": "G1", "tessellation": 4)", "/objects/0/tessellation");
 }
