@@ -165,8 +165,14 @@ Polygon clipPolygon(const Polygon& in, const Domain& d, const std::vector<HalfSp
 }
 
 // Cap segments per clip plane: world positions of polygon edges lying on that plane.
+// A boundary segment of a cap, oriented so that the cap lies on its left seen from
+// outside the solid, with the clip-plane tags of its end points.
+struct CapSegment {
+  Vector3d a, b;
+  unsigned ta = 0, tb = 0;
+};
 struct CapSegments {
-  std::vector<std::vector<std::pair<Vector3d, Vector3d>>> per_plane;
+  std::vector<std::vector<CapSegment>> per_plane;
 };
 
 // Builder of one primitive's surface triangles (triangle soup, one normal per corner).
@@ -227,13 +233,27 @@ struct SurfaceBuilder {
     const Polygon poly = clipPolygon(in, domain, planes);
     if (poly.empty()) return;
     for (std::size_t i = 1; i + 1 < poly.size(); ++i) emit(poly[0], poly[i], poly[i + 1]);
+    if (cap_planes == 0) return;
+    // Orientation of the polygon against the outward normal (Newell normal vs gradient).
+    Vector3d newell = Vector3d::Zero(), grad = Vector3d::Zero();
+    std::vector<Vector3d> P(poly.size());
+    for (std::size_t i = 0; i < poly.size(); ++i) P[i] = domain.position(poly[i].coord);
     for (std::size_t i = 0; i < poly.size(); ++i) {
-      const ClipVertex& u = poly[i];
-      const ClipVertex& v = poly[(i + 1) % poly.size()];
-      const unsigned common = u.tags & v.tags;
+      newell += P[i].cross(P[(i + 1) % poly.size()]);
+      grad += q.gradient(P[i]);
+    }
+    const bool outward = newell.dot(grad) >= 0;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const std::size_t j = (i + 1) % poly.size();
+      const unsigned common = poly[i].tags & poly[j].tags;
       if (!common || (common & (common - 1))) continue;  // on no plane, or along a plane-plane line
-      for (std::size_t k = 0; k < cap_planes && k < 32; ++k)
-        if (common == (1u << k)) caps.per_plane[k].emplace_back(domain.position(u.coord), domain.position(v.coord));
+      if (P[i] == P[j]) continue;
+      for (std::size_t k = 0; k < cap_planes && k < 32; ++k) {
+        if (common != (1u << k)) continue;
+        // The cap runs the shared edge the other way round.
+        if (outward) caps.per_plane[k].push_back({P[j], P[i], poly[j].tags, poly[i].tags});
+        else caps.per_plane[k].push_back({P[i], P[j], poly[i].tags, poly[j].tags});
+      }
     }
   }
 
@@ -247,63 +267,166 @@ struct PointKey {
   bool operator()(const Vector3d& a, const Vector3d& b) const { return lexLess(a, b); }
 };
 
-// Cap on plane h from its boundary segments: fan from the centroid, gaps (where another
-// clip plane cuts the cap) closed chain end → next chain start counter-clockwise.
-void buildCap(const HalfSpace& h, const std::vector<std::pair<Vector3d, Vector3d>>& segs, TriangleMesh3& mesh) {
+// Ear clipping of a simple polygon given in 2-D (counter-clockwise); appends index triples.
+// Returns false when no ear can be found (self-intersecting or degenerate input).
+bool earClip(const std::vector<Vector2d>& pts, std::vector<std::array<int, 3>>& out) {
+  std::vector<int> idx(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) idx[i] = int(i);
+  auto cross = [](const Vector2d& o, const Vector2d& a, const Vector2d& b) {
+    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
+  };
+  while (idx.size() > 3) {
+    bool found = false;
+    const std::size_t n = idx.size();
+    for (std::size_t i = 0; i < n && !found; ++i) {
+      const int ip = idx[(i + n - 1) % n], ic = idx[i], in = idx[(i + 1) % n];
+      const Vector2d &A = pts[std::size_t(ip)], &B = pts[std::size_t(ic)], &C = pts[std::size_t(in)];
+      if (cross(A, B, C) <= 0) continue;  // reflex or flat
+      bool empty = true;
+      for (std::size_t k = 0; k < n && empty; ++k) {
+        const int o = idx[k];
+        if (o == ip || o == ic || o == in) continue;
+        const Vector2d& X = pts[std::size_t(o)];
+        if (X == A || X == B || X == C) continue;
+        if (cross(A, B, X) >= 0 && cross(B, C, X) >= 0 && cross(C, A, X) >= 0) empty = false;
+      }
+      if (!empty) continue;
+      out.push_back({ip, ic, in});
+      idx.erase(idx.begin() + std::ptrdiff_t(i));
+      found = true;
+    }
+    if (!found) return false;
+  }
+  if (idx.size() == 3) out.push_back({idx[0], idx[1], idx[2]});
+  return true;
+}
+
+// Cap on plane h from its oriented boundary segments: chains are followed end to start;
+// an open chain (cut by another clip plane j) is closed along the line h ∩ j to the next
+// chain start on that line; each loop is triangulated by ear clipping in the plane.
+void buildCap(std::size_t k, const std::vector<CapSegment>& segs, const std::vector<HalfSpace>& planes,
+              TriangleMesh3& mesh) {
+  const HalfSpace& h = planes[k];
   if (segs.size() < 2) return;
   const Vector3d n = h.p.head<3>().normalized();
-  std::map<Vector3d, int, PointKey> outdeg, indeg;
-  Vector3d m = Vector3d::Zero();
-  std::map<Vector3d, int, PointKey> unique;
-  for (const auto& s : segs) {
-    unique[s.first] = 1;
-    unique[s.second] = 1;
-  }
-  for (const auto& u : unique) m += u.first;
-  m /= double(unique.size());
-  // Project the centroid onto the plane (the boundary points are on it up to rounding).
-  m -= (h.eval(m) / h.p.head<3>().norm()) * n;
   const Vector3d b1 = (std::abs(n.x()) < 0.9 ? Vector3d::UnitX() : Vector3d::UnitY()).cross(n).normalized();
   const Vector3d b2 = n.cross(b1);
-  auto angle = [&](const Vector3d& p) { return std::atan2((p - m).dot(b2), (p - m).dot(b1)); };
-  auto emit = [&](const Vector3d& a, const Vector3d& b) {
-    const Vector3d fn = (a - m).cross(b - m);
-    if (!(fn.norm() > 0) || a == b) return;
-    const int base = int(mesh.positions.size());
-    mesh.positions.insert(mesh.positions.end(), {m, a, b});
-    mesh.normals.insert(mesh.normals.end(), {n, n, n});
-    mesh.triangles.push_back({base, base + 1, base + 2});
-  };
-  std::vector<std::pair<Vector3d, Vector3d>> ccw;
-  for (auto s : segs) {
-    if ((s.first - m).cross(s.second - m).dot(n) < 0) std::swap(s.first, s.second);
-    ccw.push_back(s);
-    outdeg[s.first]++;
-    indeg[s.second]++;
-  }
-  for (const auto& s : ccw) emit(s.first, s.second);
-  std::vector<std::pair<double, Vector3d>> starts;
-  std::vector<Vector3d> ends;
-  for (const auto& u : unique) {
-    const int o = outdeg.count(u.first) ? outdeg[u.first] : 0;
-    const int i = indeg.count(u.first) ? indeg[u.first] : 0;
-    if (o > i) starts.emplace_back(angle(u.first), u.first);
-    if (i > o) ends.push_back(u.first);
-  }
-  if (starts.empty()) return;
-  for (const Vector3d& e : ends) {
-    const double ae = angle(e);
-    double best = 1e300;
-    Vector3d pick = starts.front().second;
-    for (const auto& s : starts) {
-      double d = s.first - ae;
-      while (d <= 0) d += kTwoPi;
-      if (d < best) {
-        best = d;
-        pick = s.second;
-      }
+  std::map<Vector3d, std::size_t, PointKey> startAt;  // segment starting at a point
+  for (std::size_t i = 0; i < segs.size(); ++i) startAt.emplace(segs[i].a, i);
+  std::map<Vector3d, int, PointKey> endCount;
+  for (const auto& sg : segs) endCount[sg.b]++;
+  std::vector<char> used(segs.size(), 0);
+  // Chains: start at segments whose start is no segment's end (open chains) first.
+  std::vector<std::vector<std::size_t>> chains;
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < segs.size(); ++i)
+    if (!endCount.count(segs[i].a)) order.push_back(i);
+  for (std::size_t i = 0; i < segs.size(); ++i) order.push_back(i);
+  for (std::size_t s0 : order) {
+    if (used[s0]) continue;
+    std::vector<std::size_t> chain;
+    std::size_t cur = s0;
+    while (!used[cur]) {
+      used[cur] = 1;
+      chain.push_back(cur);
+      auto it = startAt.find(segs[cur].b);
+      if (it == startAt.end()) break;
+      cur = it->second;
     }
-    emit(e, pick);
+    chains.push_back(chain);
+  }
+  // Join open chains into loops.
+  std::vector<char> chainUsed(chains.size(), 0);
+  std::vector<std::vector<Vector3d>> loops;
+  for (std::size_t c0 = 0; c0 < chains.size(); ++c0) {
+    if (chainUsed[c0]) continue;
+    std::vector<Vector3d> loop;
+    std::size_t c = c0;
+    for (int guard = 0; guard <= int(chains.size()); ++guard) {
+      chainUsed[c] = 1;
+      for (std::size_t si : chains[c]) loop.push_back(segs[si].a);
+      const CapSegment& last = segs[chains[c].back()];
+      if (last.b == segs[chains[c0].front()].a) break;  // closed
+      // Open: walk along the line h ∩ j (interior on the left) to the nearest chain start.
+      double best = 1e300;
+      std::size_t pick = c0;
+      bool onLine = false;
+      for (std::size_t d = 0; d < chains.size(); ++d) {
+        if (chainUsed[d] && d != c0) continue;
+        const CapSegment& first = segs[chains[d].front()];
+        const unsigned shared = last.tb & first.ta & ~(k < 32 ? (1u << k) : 0u);
+        Vector3d dir = Vector3d::Zero();
+        for (std::size_t j = 0; j < planes.size() && j < 32; ++j)
+          if (shared & (1u << j)) dir = n.cross(planes[j].p.head<3>().normalized());
+        const Vector3d step = first.a - last.b;
+        double score;
+        bool line = dir.squaredNorm() > 0;
+        if (line) {
+          const double along = step.dot(dir);
+          if (along < -1e-12 * (1 + step.norm())) line = false;
+          score = step.norm();
+        } else {
+          score = step.norm();
+        }
+        if ((line && !onLine) || (line == onLine && score < best)) {
+          best = score;
+          pick = d;
+          onLine = line;
+        }
+      }
+      loop.push_back(last.b);
+      if (pick == c0) break;
+      c = pick;
+    }
+    // Remove consecutive duplicates.
+    std::vector<Vector3d> clean;
+    for (const auto& p : loop)
+      if (clean.empty() || !(clean.back() == p)) clean.push_back(p);
+    while (clean.size() > 1 && clean.front() == clean.back()) clean.pop_back();
+    if (clean.size() >= 3) loops.push_back(clean);
+  }
+  for (const auto& loop : loops) {
+    std::vector<Vector2d> pts;
+    for (const auto& p : loop) pts.emplace_back(p.dot(b1), p.dot(b2));
+    double area = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const Vector2d& a = pts[i];
+      const Vector2d& b = pts[(i + 1) % pts.size()];
+      area += a.x() * b.y() - a.y() * b.x();
+    }
+    std::vector<std::array<int, 3>> tris;
+    std::vector<Vector2d> ccw = pts;
+    const bool reversed = area < 0;
+    if (reversed) std::reverse(ccw.begin(), ccw.end());
+    const int N = int(pts.size());
+    auto orig = [&](int i) { return reversed ? N - 1 - i : i; };
+    if (!earClip(ccw, tris)) {  // fall back to a fan from the centroid
+      tris.clear();
+      Vector3d m = Vector3d::Zero();
+      for (const auto& p : loop) m += p;
+      m /= double(loop.size());
+      for (int i = 0; i < N; ++i) {
+        const Vector3d& a = loop[std::size_t(i)];
+        const Vector3d& b = loop[std::size_t((i + 1) % N)];
+        const int base = int(mesh.positions.size());
+        mesh.positions.insert(mesh.positions.end(), {m, a, b});
+        mesh.normals.insert(mesh.normals.end(), {n, n, n});
+        mesh.triangles.push_back({base, base + 1, base + 2});
+      }
+      continue;
+    }
+    for (const auto& t : tris) {
+      const Vector3d& a = loop[std::size_t(orig(t[0]))];
+      const Vector3d& b = loop[std::size_t(orig(t[1]))];
+      const Vector3d& c = loop[std::size_t(orig(t[2]))];
+      Vector3d fn = (b - a).cross(c - a);
+      if (!(fn.norm() > 0)) continue;
+      const int base = int(mesh.positions.size());
+      if (fn.dot(n) >= 0) mesh.positions.insert(mesh.positions.end(), {a, b, c});
+      else mesh.positions.insert(mesh.positions.end(), {a, c, b});
+      mesh.normals.insert(mesh.normals.end(), {n, n, n});
+      mesh.triangles.push_back({base, base + 1, base + 2});
+    }
   }
 }
 
@@ -786,7 +909,7 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Ca
     }
   }
   out.surface_triangles = out.mesh.size();
-  for (std::size_t k = 0; k < capPlanes; ++k) buildCap(planes[k], caps.per_plane[k], out.mesh);
+  for (std::size_t k = 0; k < capPlanes; ++k) buildCap(k, caps.per_plane[k], planes, out.mesh);
   out.cap_triangles = out.mesh.size() - out.surface_triangles;
   if (out.mesh.size() == 0) out.method = TessellationMethod::Empty;
   const ChordError ce = measureChordError(out.mesh, prim.quadric, 0, out.surface_triangles);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "raster/reference_renderer.h"
+#include "tools/facet_engine.h"
 #include "tools/hw_engine.h"
 
 namespace qacc {
@@ -11,6 +12,7 @@ namespace qacc {
 std::vector<std::string> engineNames() {
   std::vector<std::string> names{"reference"};
   for (const auto& n : hwEngineNames()) names.push_back(n);
+  names.push_back("facets");
   return names;
 }
 
@@ -27,6 +29,7 @@ EngineResult runEngine(const std::string& engine, const Scene& scene, const Engi
     return r;
   }
   if (runHwEngine(engine, scene, options, r)) return r;
+  if (runFacetEngine(engine, scene, options, r)) return r;
   // --- further engines (hw, hw-cycle, facets) are dispatched above this line ---
   std::string names;
   for (const auto& n : engineNames()) names += (names.empty() ? "" : ", ") + n;
