@@ -8,6 +8,7 @@ namespace qacc {
 void addRenderCommand(CLI::App& app);
 void addBatchCommand(CLI::App& app);
 void addInfoCommand(CLI::App& app);
+void addCompareCommand(CLI::App& app);  // tools/compare_command.cpp
 void addReduceCommand(CLI::App& app);
 
 }  // namespace qacc

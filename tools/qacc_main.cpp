@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   qacc::addRenderCommand(app);
   qacc::addBatchCommand(app);
   qacc::addInfoCommand(app);
+  qacc::addCompareCommand(app);
   qacc::addReduceCommand(app);
   try {
     app.parse(argc, argv);
