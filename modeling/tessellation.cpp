@@ -305,8 +305,23 @@ bool earClip(const std::vector<Vector2d>& pts, std::vector<std::array<int, 3>>& 
 // an open chain (cut by another clip plane j) is closed along the line h ∩ j to the next
 // chain start on that line; each loop is triangulated by ear clipping in the plane.
 void buildCap(std::size_t k, const std::vector<CapSegment>& segs, const std::vector<HalfSpace>& planes,
-              TriangleMesh3& mesh) {
+              const std::vector<Vector3d>& polytope, TriangleMesh3& mesh) {
   const HalfSpace& h = planes[k];
+  const unsigned kbit = k < 32 ? (1u << k) : 0u;
+  // Corners of the cap's polygon: polytope vertices on this plane, with their plane tags.
+  std::vector<Vector3d> corners;
+  std::vector<unsigned> cornerTags;
+  for (const auto& v : polytope) {
+    unsigned t = 0;
+    for (std::size_t m = 0; m < planes.size() && m < 32; ++m) {
+      const double mag = planes[m].p.head<3>().cwiseAbs().dot(v.cwiseAbs()) + std::abs(planes[m].p[3]);
+      if (std::abs(planes[m].eval(v)) <= 1e-9 * mag) t |= 1u << m;
+    }
+    if (t & kbit) {
+      corners.push_back(v);
+      cornerTags.push_back(t);
+    }
+  }
   if (segs.size() < 2) return;
   const Vector3d n = h.p.head<3>().normalized();
   const Vector3d b1 = (std::abs(n.x()) < 0.9 ? Vector3d::UnitX() : Vector3d::UnitY()).cross(n).normalized();
@@ -347,35 +362,66 @@ void buildCap(std::size_t k, const std::vector<CapSegment>& segs, const std::vec
       for (std::size_t si : chains[c]) loop.push_back(segs[si].a);
       const CapSegment& last = segs[chains[c].back()];
       if (last.b == segs[chains[c0].front()].a) break;  // closed
-      // Open: walk along the line h ∩ j (interior on the left) to the nearest chain start.
-      double best = 1e300;
-      std::size_t pick = c0;
-      bool onLine = false;
-      for (std::size_t d = 0; d < chains.size(); ++d) {
-        if (chainUsed[d] && d != c0) continue;
-        const CapSegment& first = segs[chains[d].front()];
-        const unsigned shared = last.tb & first.ta & ~(k < 32 ? (1u << k) : 0u);
-        Vector3d dir = Vector3d::Zero();
-        for (std::size_t j = 0; j < planes.size() && j < 32; ++j)
-          if (shared & (1u << j)) dir = n.cross(planes[j].p.head<3>().normalized());
-        const Vector3d step = first.a - last.b;
-        double score;
-        bool line = dir.squaredNorm() > 0;
-        if (line) {
-          const double along = step.dot(dir);
-          if (along < -1e-12 * (1 + step.norm())) line = false;
-          score = step.norm();
-        } else {
-          score = step.norm();
+      // Open: walk along the boundary of the cap's polygon (plane h ∩ the other clip
+      // half-spaces) with the interior on the left: along the line h ∩ j to the nearest chain
+      // start on it, turning at the polygon's corners.
+      loop.push_back(last.b);
+      Vector3d e = last.b;
+      unsigned etags = last.tb & ~kbit;
+      std::size_t pick = chains.size();
+      for (int turn = 0; turn < 64 && pick == chains.size(); ++turn) {
+        int j = -1;
+        for (std::size_t m = 0; m < planes.size() && m < 32; ++m)
+          if (etags & (1u << m)) {
+            j = int(m);
+            break;
+          }
+        if (j < 0) break;
+        const Vector3d dir = n.cross(planes[std::size_t(j)].p.head<3>().normalized());
+        const double eps = 1e-12 * (1 + e.norm());
+        double best = 1e300;
+        int bestChain = -1, bestCorner = -1;
+        for (std::size_t d = 0; d < chains.size(); ++d) {
+          if (chainUsed[d] && d != c0) continue;
+          const CapSegment& first = segs[chains[d].front()];
+          if (!(first.ta & (1u << j))) continue;
+          const double along = (first.a - e).dot(dir);
+          if (along > eps && along < best) {
+            best = along;
+            bestChain = int(d);
+          }
         }
-        if ((line && !onLine) || (line == onLine && score < best)) {
-          best = score;
-          pick = d;
-          onLine = line;
+        for (std::size_t v = 0; v < corners.size(); ++v) {
+          if (!(cornerTags[v] & (1u << j))) continue;
+          const double along = (corners[v] - e).dot(dir);
+          if (along > eps && along < best) {
+            best = along;
+            bestChain = -1;
+            bestCorner = int(v);
+          }
+        }
+        if (bestChain >= 0) {
+          pick = std::size_t(bestChain);
+        } else if (bestCorner >= 0) {
+          e = corners[std::size_t(bestCorner)];
+          loop.push_back(e);
+          etags = cornerTags[std::size_t(bestCorner)] & ~kbit & ~(1u << j);
+        } else {
+          break;
         }
       }
-      loop.push_back(last.b);
-      if (pick == c0) break;
+      if (pick == chains.size()) {  // no walk possible: close to the nearest chain start
+        double best = 1e300;
+        for (std::size_t d = 0; d < chains.size(); ++d) {
+          if (chainUsed[d] && d != c0) continue;
+          const double dist = (segs[chains[d].front()].a - e).norm();
+          if (dist < best) {
+            best = dist;
+            pick = d;
+          }
+        }
+      }
+      if (pick == c0 || pick == chains.size()) break;
       c = pick;
     }
     // Remove consecutive duplicates.
@@ -909,7 +955,8 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Ca
     }
   }
   out.surface_triangles = out.mesh.size();
-  for (std::size_t k = 0; k < capPlanes; ++k) buildCap(k, caps.per_plane[k], planes, out.mesh);
+  const std::vector<Vector3d> polyVerts = capPlanes ? polytopeVertices(planes) : std::vector<Vector3d>();
+  for (std::size_t k = 0; k < capPlanes; ++k) buildCap(k, caps.per_plane[k], planes, polyVerts, out.mesh);
   out.cap_triangles = out.mesh.size() - out.surface_triangles;
   if (out.mesh.size() == 0) out.method = TessellationMethod::Empty;
   const ChordError ce = measureChordError(out.mesh, prim.quadric, 0, out.surface_triangles);

@@ -83,6 +83,11 @@ TEST(Tessellation, SolidsAreWatertightWithVerticesOnSurface) {
   Primitive cut = makeSphere(Vector3d::Zero(), 1.0);
   cut.clip = {HalfSpace(Eigen::Vector4d(1, 0.2, 0, -0.3)), HalfSpace(Eigen::Vector4d(0, 1, 0.3, -0.2))};
   prims.push_back(cut);
+  // Three planes meeting inside the solid: the caps turn at the polytope's corner.
+  Primitive corner = makeSphere(Vector3d::Zero(), 1.0);
+  corner.clip = {HalfSpace(Eigen::Vector4d(1, 0, 0, -0.3)), HalfSpace(Eigen::Vector4d(0, 1, 0, -0.2)),
+                 HalfSpace(Eigen::Vector4d(0, 0, 1, -0.1))};
+  prims.push_back(corner);
   for (std::size_t i = 0; i < prims.size(); ++i) {
     Primitive p = prims[i];
     p.solid = true;
