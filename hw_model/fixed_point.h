@@ -104,10 +104,11 @@ inline i128 quantize(double v, int scaleBits, int width, OverflowMode mode, Over
   }
   const double s = std::round(std::ldexp(v, scaleBits));
   if (!(std::fabs(s) < lim) || std::fabs(s) >= 1.0e37) {
-    ++ovf.events;
-    if (mode == OverflowMode::Saturate || std::fabs(s) >= 1.0e37)
+    if (mode == OverflowMode::Saturate || std::fabs(s) >= 1.0e37) {
+      ++ovf.events;
       return s > 0 ? (i128(1) << (width - 1)) - 1 : -(i128(1) << (width - 1));
-    return fitWidth(i128(s), width, mode, ovf);
+    }
+    return fitWidth(i128(s), width, mode, ovf);  // counts the event
   }
   return i128(s);
 }

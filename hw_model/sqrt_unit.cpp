@@ -44,6 +44,7 @@ std::uint64_t SqrtUnit::recurrence(unsigned __int128 n, int inputBits, int radix
 
 std::uint64_t SqrtUnit::compute(unsigned __int128 n) {
   if (n == 0) return 0;
+  // Operands are below 2^124 (delta_bits <= 80 in any configuration), so x² cannot wrap.
   unsigned __int128 x = (unsigned __int128)std::sqrt((long double)n);
   while (x * x > n) --x;
   while ((x + 1) * (x + 1) <= n) ++x;
