@@ -305,7 +305,7 @@ bool earClip(const std::vector<Vector2d>& pts, std::vector<std::array<int, 3>>& 
 // an open chain (cut by another clip plane j) is closed along the line h ∩ j to the next
 // chain start on that line; each loop is triangulated by ear clipping in the plane.
 void buildCap(std::size_t k, const std::vector<CapSegment>& segs, const std::vector<HalfSpace>& planes,
-              const std::vector<Vector3d>& polytope, TriangleMesh3& mesh) {
+              const std::vector<Vector3d>& polytope, const Quadric& q, TriangleMesh3& mesh) {
   const HalfSpace& h = planes[k];
   const unsigned kbit = k < 32 ? (1u << k) : 0u;
   // Corners of the cap's polygon: polytope vertices on this plane, with their plane tags.
@@ -317,7 +317,8 @@ void buildCap(std::size_t k, const std::vector<CapSegment>& segs, const std::vec
       const double mag = planes[m].p.head<3>().cwiseAbs().dot(v.cwiseAbs()) + std::abs(planes[m].p[3]);
       if (std::abs(planes[m].eval(v)) <= 1e-9 * mag) t |= 1u << m;
     }
-    if (t & kbit) {
+    // Only corners inside the solid (f <= 0) bound the cap.
+    if ((t & kbit) && q.eval(v) <= 1e-9 * (1 + v.squaredNorm())) {
       corners.push_back(v);
       cornerTags.push_back(t);
     }
@@ -949,14 +950,14 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Ca
       out.method = TessellationMethod::MarchingTetrahedra;
       domain.linear = true;
       domain.position = [](const Vector3d& p) { return p; };
-      const int n = std::max(2, int(std::lround(std::sqrt(std::max(2, target) / 3.0))));
+      const int n = std::max(4, int(std::lround(std::sqrt(std::max(2, target) / 3.0))));
       marchingTetrahedra(sb, q, surfaceBox(q, box, planes), n);
       break;
     }
   }
   out.surface_triangles = out.mesh.size();
   const std::vector<Vector3d> polyVerts = capPlanes ? polytopeVertices(planes) : std::vector<Vector3d>();
-  for (std::size_t k = 0; k < capPlanes; ++k) buildCap(k, caps.per_plane[k], planes, polyVerts, out.mesh);
+  for (std::size_t k = 0; k < capPlanes; ++k) buildCap(k, caps.per_plane[k], planes, polyVerts, q, out.mesh);
   out.cap_triangles = out.mesh.size() - out.surface_triangles;
   if (out.mesh.size() == 0) out.method = TessellationMethod::Empty;
   const ChordError ce = measureChordError(out.mesh, prim.quadric, 0, out.surface_triangles);
