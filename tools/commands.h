@@ -10,5 +10,6 @@ void addBatchCommand(CLI::App& app);
 void addInfoCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);  // tools/compare_command.cpp
 void addReduceCommand(CLI::App& app);
+void addBenchCommand(CLI::App& app);  // tools/bench_command.cpp (accelerator benchmark)
 
 }  // namespace qacc

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   qacc::addInfoCommand(app);
   qacc::addCompareCommand(app);
   qacc::addReduceCommand(app);
+  qacc::addBenchCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
