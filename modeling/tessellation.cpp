@@ -750,7 +750,8 @@ void axialExtent(const std::vector<Vector3d>& verts, const Vector3d& c, const Ve
   }
 }
 
-PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Camera* camera, double aspect) {
+PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Camera* camera, double aspect,
+                                     int chordSamples) {
   PrimitiveTessellation out;
   const Quadric q = prim.quadric.normalized();
   const std::size_t own = prim.clip.size();
@@ -960,7 +961,7 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Ca
   for (std::size_t k = 0; k < capPlanes; ++k) buildCap(k, caps.per_plane[k], planes, polyVerts, q, out.mesh);
   out.cap_triangles = out.mesh.size() - out.surface_triangles;
   if (out.mesh.size() == 0) out.method = TessellationMethod::Empty;
-  const ChordError ce = measureChordError(out.mesh, prim.quadric, 0, out.surface_triangles);
+  const ChordError ce = measureChordError(out.mesh, prim.quadric, 0, out.surface_triangles, chordSamples);
   out.max_chord_error = ce.max;
   out.mean_chord_error = ce.mean;
   return out;
@@ -970,13 +971,13 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Ca
 
 PrimitiveTessellation tessellatePrimitive(const Primitive& prim, const TessellationOptions& options,
                                           const Camera* camera, double aspect) {
-  if (options.chord_error <= 0) return tessellateOnce(prim, std::max(2, options.triangles), camera, aspect);
+  if (options.chord_error <= 0) return tessellateOnce(prim, std::max(2, options.triangles), camera, aspect, options.chord_samples);
   int target = 8;
-  PrimitiveTessellation t = tessellateOnce(prim, target, camera, aspect);
+  PrimitiveTessellation t = tessellateOnce(prim, target, camera, aspect, options.chord_samples);
   while (t.max_chord_error > options.chord_error && t.method != TessellationMethod::Planar &&
          t.method != TessellationMethod::Empty && target * 2 <= options.max_triangles) {
     target *= 2;
-    t = tessellateOnce(prim, target, camera, aspect);
+    t = tessellateOnce(prim, target, camera, aspect, options.chord_samples);
   }
   return t;
 }
@@ -1011,10 +1012,11 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
   return all;
 }
 
-ChordError measureChordError(const TriangleMesh3& mesh, const Quadric& quadric, std::size_t first, std::size_t count) {
+ChordError measureChordError(const TriangleMesh3& mesh, const Quadric& quadric, std::size_t first, std::size_t count,
+                             int subdivisions) {
   ChordError e;
   const std::size_t last = std::min(mesh.triangles.size(), count == std::size_t(-1) ? mesh.triangles.size() : first + count);
-  const int m = 6;  // barycentric grid: vertices, edge midpoints and interior points
+  const int m = std::max(1, subdivisions);  // barycentric grid: vertices, edge points, interior points
   double sum = 0;
   std::size_t samples = 0;
   for (std::size_t t = first; t < last; ++t) {

@@ -52,6 +52,7 @@ struct TessellationOptions {
   int triangles = 128;      // target surface triangles per primitive (>= 2)
   double chord_error = 0;   // > 0: refine until the chord error is at most this (world units)
   int max_triangles = 1 << 20;  // cap per primitive when refining by chord error
+  int chord_samples = 6;    // barycentric subdivisions per triangle edge when measuring chord error
 };
 
 enum class TessellationMethod { Parametric, Planar, MarchingTetrahedra, Empty };
@@ -89,7 +90,7 @@ struct ChordError {
   double max = 0, mean = 0;
 };
 ChordError measureChordError(const TriangleMesh3& mesh, const Quadric& quadric, std::size_t first = 0,
-                             std::size_t count = std::size_t(-1));
+                             std::size_t count = std::size_t(-1), int subdivisions = 6);
 // Distance from p to the quadric surface (Newton projection along the gradient).
 double distanceToQuadric(const Quadric& quadric, const Eigen::Vector3d& p);
 

@@ -13,6 +13,7 @@ FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, i
   const auto t0 = std::chrono::steady_clock::now();
   TessellationOptions to;
   to.triangles = level;
+  to.chord_samples = 2;  // vertices, edge midpoints and the centre region: cheap enough for big scenes
   TriangleMesh3 mesh = tessellateScene(scene, to, &run.tessellation);
   run.tessellate_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 #ifdef QACC_HAVE_OSMESA
