@@ -60,7 +60,7 @@ struct CompareOptions {
   int threads = 0;
   int width = 0, height = 0;
   bool no_facet_cycles = false;
-  std::size_t max_cycle_triangles = 400000;  // facet-path cycle runs above this are skipped
+  std::size_t max_cycle_triangles = 1000000;  // facet-path cycle runs above this are skipped
 };
 
 struct Metrics {
