@@ -504,6 +504,8 @@ BezierMesh tessellateBezierTriangles(const std::vector<ControlNet>& nets, int n)
 }
 
 std::vector<Primitive> buildMacropatch(const JsonNode& o, ObjectContext& ctx) {
+  if (ctx.solid)
+    o.at("solid").fail("macropatch cells are surface pieces; caps on their cell faces would show the cells, not a solid");
   std::vector<ControlNet> nets;
   const auto netsNode = o.get("control_nets");
   const auto surfNode = o.get("surface");

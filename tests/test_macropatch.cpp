@@ -72,6 +72,25 @@ int enclosedBackgroundPixels(const FrameBuffer& fb) {
   return holes;
 }
 
+// Pixels whose visible point is on the inside of the closed surface (the outward gradient
+// faces away from the viewer): through a crack or pinhole one sees the back of the surface
+// from inside. Grazing points (|cos| < 0.05) are not counted.
+int insideViews(const Scene& s, const FrameBuffer& fb) {
+  const Eigen::Matrix4d Minv = s.camera.worldToWindow(fb.width, fb.height).inverse();
+  int n = 0;
+  for (int y = 0; y < fb.height; ++y)
+    for (int x = 0; x < fb.width; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
+      if (fb.primitive[i] < 0) continue;
+      const Eigen::Vector4d X = Minv * Eigen::Vector4d(x + 0.5, y + 0.5, fb.depth[i], 1.0);
+      const Vector3d p = X.head<3>() / X.w();
+      const Vector3d g = s.primitives[std::size_t(fb.primitive[i])].quadric.gradient(p);
+      const Vector3d v = s.camera.toViewer(p);
+      if (g.dot(v) < -0.05 * g.norm() * v.norm()) ++n;
+    }
+  return n;
+}
+
 std::string sceneText(const std::string& model, int w) {
   return R"({"format": "qacc-scene/1", "image": {"width": )" + std::to_string(w) + R"(, "height": )" +
          std::to_string(w) + R"(},
@@ -255,12 +274,19 @@ TEST(Macropatch, NoPinholesAlongSharedFaces) {
     const FrameBuffer ref = renderReference(s, 0);
     EXPECT_GT(ref.covered(), 5000u);
     EXPECT_EQ(enclosedBackgroundPixels(ref), 0) << model << " reference";
+    EXPECT_EQ(insideViews(s, ref), 0) << model << " reference";
     // The accelerator (functional engine) must not open holes along shared faces either.
     EngineOptions eo;
     eo.report_accuracy = false;
     const EngineResult hw = runEngine("hw", s, eo);
     EXPECT_GT(hw.fb.covered(), 5000u);
     EXPECT_EQ(enclosedBackgroundPixels(hw.fb), 0) << model << " hw";
+    EXPECT_EQ(insideViews(s, hw.fb), 0) << model << " hw";
+    // The detector does see a hole: drop the cell seen at the image centre.
+    Scene holed = s;
+    const std::size_t victim = std::size_t(ref.primitive[std::size_t(100 * 200 + 100)]);
+    holed.primitives.erase(holed.primitives.begin() + std::ptrdiff_t(victim));
+    EXPECT_GT(insideViews(holed, renderReference(holed, 0)), 20) << model;
   }
 }
 
@@ -288,4 +314,5 @@ TEST(Macropatch, SceneErrors) {
   EXPECT_EQ(tri.primitives.size(), 8u * 16u);
   for (const auto& p : tri.primitives) EXPECT_TRUE(p.isPlanar());
   fails(R"("surface": "octahedron", "model": "G1", "tessellation": 4)", "/objects/0/tessellation");
+  fails(R"("surface": "octahedron", "solid": true)", "/objects/0/solid");
 }
