@@ -48,6 +48,14 @@ struct WindowPrimitive {
 // Window-space form of `prim` for a width x height image; M = world → window, Minv = M⁻¹.
 WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& Minv, int width, int height);
 
+// Pixels covering the window-space projection of the clipped piece itself: the exact x and y
+// extents of (surface ∩ clip polyhedron ∩ view volume), or of (solid ∩ ...) when `solid`,
+// found among the points where a linear function can be extreme on that set (Lagrange):
+// surface points where ∇f ∥ the axis, points of each face's conic where ∇f, the face
+// normal and the axis are coplanar, face-edge ∩ surface, the singular point (cone apex) and,
+// for solids, the polytope vertices inside f <= 0. Widened by one pixel; empty when nothing
+// of the piece lies in the view volume.
+ScreenBox patchBox(const Eigen::Matrix4d& Q, const std::vector<HalfSpace>& clip, bool solid, int width, int height);
 // Pixels whose centres can satisfy Δ >= 0 (exact extent of the conic region, widened by one
 // pixel against rounding), clamped to the screen; the whole screen when the region is unbounded.
 ScreenBox conicBox(const Conic& delta, int width, int height);
