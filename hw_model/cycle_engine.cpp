@@ -6,7 +6,6 @@
 #include <memory>
 #include <stdexcept>
 
-#include "hw_model/depth_unit.h"
 #include "hw_model/host_interface.h"
 #include "hw_model/hw_scene_setup.h"
 #include "hw_model/pixel_pipeline_unit.h"
@@ -14,29 +13,20 @@
 #include "hw_model/shading_unit.h"
 #include "hw_model/traversal_unit.h"
 #include "hw_model/zbuffer_unit.h"
-#include "raster/shading.h"
 
 namespace qacc {
 
 namespace {
 
+// The shading units' output port. Colours are a pure function of the Z-buffer's final
+// winners (ShadingUnit::shade of the same inputs), so the frame is resolved once the
+// pipeline has drained (resolveFrame, shared with `hw`); the port counts what the
+// shading units delivered, which the functional engine cannot know.
 struct ColourWriter {
-  const Scene* scene;
-  const HwConfig* cfg;
-  const HwSceneSetup* hs;
-  FrameBuffer* fb;
-  std::vector<std::int32_t>* order;  // last primitive written per pixel
-  OverflowCounter ovf;
+  std::uint64_t delivered = 0;
   static void write(void* ctx, const ShadeRequest& r) {
-    auto* w = static_cast<ColourWriter*>(ctx);
-    const PrimitiveSetup& s = w->hs->setups[std::size_t(r.prim)];
-    const auto rgb = ShadingUnit::shade(s, w->hs->lighting, *w->cfg, r.x - s.x0, r.y - s.y0, r.z, r.cap, w->ovf);
-    const std::size_t pix = std::size_t(r.y) * std::size_t(w->fb->width) + std::size_t(r.x);
-    for (int c = 0; c < 3; ++c) w->fb->color.data[pix * 3 + c] = rgb[std::size_t(c)];
-    w->fb->object[pix] = s.object;
-    w->fb->primitive[pix] = r.prim;
-    const double lsb = std::ldexp(1.0, -w->cfg->zbuffer_bits);
-    w->fb->depth[pix] = (double(DepthUnit::zbufferValue(r.z, *w->cfg)) + 0.5) * lsb;
+    (void)r;
+    ++static_cast<ColourWriter*>(ctx)->delivered;
   }
 };
 
@@ -72,8 +62,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   std::vector<Fifo<ShadeRequest>> shadeFifo(P, Fifo<ShadeRequest>(std::size_t(cfg.pixel_fifo_depth)));
 
   ZBufferState zb(scene.width, scene.height);
-  out.fb = FrameBuffer(scene.width, scene.height, toSrgb8(scene.background));
-  ColourWriter writer{&scene, &cfg, &hs, &out.fb, nullptr, {}};
+  ColourWriter writer;
 
   std::vector<std::unique_ptr<Unit>> units;
   units.push_back(std::make_unique<HostInterface>(hs.setups, cfg, hostFifo));
@@ -104,6 +93,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
     return true;
   };
 
+  const auto loop0 = std::chrono::steady_clock::now();
   std::uint64_t now = 0, quiet = 0;
   for (;;) {
     bool changed = false;
@@ -130,11 +120,12 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
     }
   }
   st.cycles = now;
+  st.loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0).count();
   for (auto& u : units) st.units.push_back(u->stats());
-  std::uint64_t distinct = 0;
-  for (std::size_t i = 0; i < out.fb.pixels(); ++i) distinct += out.fb.object[i] >= 0;
-  st.distinct_written = distinct;
-  st.overflow.shading.events += writer.ovf.events;
+  if (writer.delivered != st.pixels.written)
+    throw std::logic_error("hw-cycle: shading delivered " + std::to_string(writer.delivered) + " of " +
+                           std::to_string(st.pixels.written) + " pixels");
+  out.fb = resolveFrame(scene, cfg, hs, zb, nt, st);
   st.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

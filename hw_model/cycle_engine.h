@@ -4,8 +4,9 @@
 // so tick order does not matter); a full FIFO stalls its producer; the frame ends when
 // everything has drained. Cycles in which nothing moves are skipped in one step
 // (fast-forward to the next timed event). The arithmetic is the functional engine's
-// (SetupUnit::run, PixelPipeline, ZBufferUnit::testAndWrite, ShadingUnit::shade): the
-// image is bit-identical to `hw`; this engine only adds time.
+// (SetupUnit::run, PixelPipeline, ZBufferUnit::testAndWrite, ShadingUnit::shade of the
+// final winners once drained): the image is bit-identical to `hw`; this engine only adds
+// time.
 #pragma once
 #include "hw_model/functional_engine.h"
 

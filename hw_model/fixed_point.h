@@ -115,13 +115,10 @@ inline i128 quantize(double v, int scaleBits, int width, OverflowMode mode, Over
 
 // Number of bits needed for |v| (0 for 0).
 inline int bitLength(i128 v) {
-  unsigned __int128 m = v < 0 ? (unsigned __int128)(-v) : (unsigned __int128)v;
-  int n = 0;
-  while (m) {
-    m >>= 1;
-    ++n;
-  }
-  return n;
+  const unsigned __int128 m = v < 0 ? (unsigned __int128)(-v) : (unsigned __int128)v;
+  const std::uint64_t hi = std::uint64_t(m >> 64), lo = std::uint64_t(m);
+  if (hi) return 128 - __builtin_clzll(hi);
+  return lo ? 64 - __builtin_clzll(lo) : 0;
 }
 
 // The exponent e such that |m| · 2^e < 2^(bits) with the least headroom: the block

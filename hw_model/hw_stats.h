@@ -53,6 +53,7 @@ struct HwStats {
   std::vector<UnitStats> units;
   double clock_mhz = 0;
   double host_seconds = 0;           // wall time of the render
+  double loop_seconds = 0;           // hw-cycle: wall time of the cycle loop alone (one core)
 
   double frameSeconds() const { return clock_mhz > 0 ? double(cycles) / (clock_mhz * 1e6) : 0; }
   double overdraw() const;  // covered / distinct pixels written
