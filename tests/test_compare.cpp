@@ -22,7 +22,7 @@ using namespace qacc;
 
 namespace {
 
-Scene sphereScene(int w, int h) {
+[[maybe_unused]] Scene sphereScene(int w, int h) {
   Scene s;
   s.name = "sphere";
   s.width = w;
@@ -44,6 +44,7 @@ Scene sphereScene(int w, int h) {
 
 }  // namespace
 
+#ifdef QACC_HAVE_OSMESA
 TEST(OsmesaFacets, HighLevelSphereMatchesReferenceSilhouette) {
   if (!facetRendererAvailable()) GTEST_SKIP() << facetRendererMissingMessage();
   const Scene s = sphereScene(240, 180);
@@ -94,6 +95,8 @@ TEST(OsmesaFacets, CoarseSphereShowsChordError) {
   EXPECT_GT(silhouetteDistance(ref, r.fb).hausdorff, 3.0);
 }
 
+#endif  // QACC_HAVE_OSMESA
+
 TEST(CompareCommand, GalleryWritesFilesAndCrossoverTable) {
   if (!facetRendererAvailable()) GTEST_SKIP() << facetRendererMissingMessage();
   namespace fs = std::filesystem;
@@ -133,4 +136,15 @@ TEST(CompareCommand, GalleryWritesFilesAndCrossoverTable) {
   int lines = 0;
   for (std::string l; std::getline(cf, l);) ++lines;
   EXPECT_EQ(lines, 4);
+}
+
+TEST(CompareCommand, FacetsEngineRefusesClearlyWithoutOsmesa) {
+  if (facetRendererAvailable()) GTEST_SKIP() << "OSMesa is built in";
+  const std::string log = std::string(QACC_BINARY_DIR) + "/test_compare_noosmesa.log";
+  const std::string cmd = std::string(QACC_EXE) + " render " + QACC_SOURCE_DIR +
+                          "/scenes/gallery.json -o /dev/null --engine facets > " + log + " 2>&1";
+  EXPECT_NE(std::system(cmd.c_str()), 0);
+  std::ifstream lf(log);
+  const std::string text((std::istreambuf_iterator<char>(lf)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("OSMesa"), std::string::npos) << text;
 }
