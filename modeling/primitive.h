@@ -20,7 +20,7 @@ struct Primitive {
   // All points of the primitive after points move as X' = M X.
   Primitive transformed(const Eigen::Matrix4d& M) const;
   // True when the quadratic part is zero: a plane (facet) that needs no square root.
-  bool isPlanar() const { return quadric.Q.topLeftCorner<3, 3>().isZero(0.0); }
+  bool isPlanar() const { return quadric.Q.topLeftCorner<3, 3>().cwiseAbs().maxCoeff() == 0.0; }
 };
 
 }  // namespace qacc

@@ -245,7 +245,7 @@ std::vector<HalfSpace> readClip(const JsonNode& n) {
   std::vector<HalfSpace> out;
   for (const JsonNode& c : n.elements()) {
     const Eigen::Vector4d p = c.vec4();
-    if (p.head<3>().isZero(0.0)) c.fail("clip plane [a, b, c, d] needs a non-zero normal (a, b, c)");
+    if (p.head<3>().cwiseAbs().maxCoeff() == 0.0) c.fail("clip plane [a, b, c, d] needs a non-zero normal (a, b, c)");
     out.emplace_back(p);
   }
   return out;
@@ -318,7 +318,7 @@ void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::m
     p.solid = p.solid || solid;
     p.object = int(index);
     if (!primitiveFinite(p)) o.fail("object produces non-finite coefficients (sizes or scales too extreme)");
-    if (p.quadric.Q.topLeftCorner<3, 4>().isZero(0.0))
+    if (p.quadric.Q.topLeftCorner<3, 4>().cwiseAbs().maxCoeff() == 0.0)
       o.fail("object degenerates to a constant (sizes or scales too extreme for double precision)");
     scene.primitives.push_back(std::move(p));
   }
