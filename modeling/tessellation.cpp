@@ -751,11 +751,13 @@ void axialExtent(const std::vector<Vector3d>& verts, const Vector3d& c, const Ve
 }
 
 PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Camera* camera, double aspect,
-                                     int chordSamples) {
+                                     int chordSamples, bool forceMarching = false) {
   PrimitiveTessellation out;
   const Quadric q = prim.quadric.normalized();
   const std::size_t own = prim.clip.size();
-  const QuadricType type = prim.isPlanar() ? QuadricType::Plane : quadricType(prim.quadric);
+  // QuadricType::All has no parametric branch: it selects marching tetrahedra over the region.
+  const QuadricType type = forceMarching ? QuadricType::All
+                                         : (prim.isPlanar() ? QuadricType::Plane : quadricType(prim.quadric));
   Frame f = canonicalFrame(prim.quadric);
   const double ltol = 1e-9 * f.lambda.cwiseAbs().maxCoeff();
   auto indexOfSign = [&](int sign) {  // index of the eigenvalue with this sign (0 = zero)
@@ -969,15 +971,31 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Ca
 
 }  // namespace
 
+// A parametric grid spans the whole natural surface; a small clipped piece of a large
+// surface (a Bernstein-Bézier cell far out on a hyperboloid sheet) can receive few or none
+// of its triangles. When a clipped piece gets under a quarter of its target, marching
+// tetrahedra over the piece's own region is tried and the denser mesh kept.
+PrimitiveTessellation tessellateCovering(const Primitive& prim, int target, const Camera* camera, double aspect,
+                                         int chordSamples) {
+  PrimitiveTessellation t = tessellateOnce(prim, target, camera, aspect, chordSamples);
+  const bool parametric = t.method == TessellationMethod::Parametric || t.method == TessellationMethod::Empty;
+  if (!prim.clip.empty() && !prim.isPlanar() && parametric && 4 * t.surface_triangles < std::size_t(target)) {
+    PrimitiveTessellation m = tessellateOnce(prim, target, camera, aspect, chordSamples, true);
+    if (m.surface_triangles > t.surface_triangles) return m;
+  }
+  return t;
+}
+
 PrimitiveTessellation tessellatePrimitive(const Primitive& prim, const TessellationOptions& options,
                                           const Camera* camera, double aspect) {
-  if (options.chord_error <= 0) return tessellateOnce(prim, std::max(2, options.triangles), camera, aspect, options.chord_samples);
+  if (options.chord_error <= 0)
+    return tessellateCovering(prim, std::max(2, options.triangles), camera, aspect, options.chord_samples);
   int target = 8;
-  PrimitiveTessellation t = tessellateOnce(prim, target, camera, aspect, options.chord_samples);
+  PrimitiveTessellation t = tessellateCovering(prim, target, camera, aspect, options.chord_samples);
   while (t.max_chord_error > options.chord_error && t.method != TessellationMethod::Planar &&
          t.method != TessellationMethod::Empty && target * 2 <= options.max_triangles) {
     target *= 2;
-    t = tessellateOnce(prim, target, camera, aspect, options.chord_samples);
+    t = tessellateCovering(prim, target, camera, aspect, options.chord_samples);
   }
   return t;
 }
