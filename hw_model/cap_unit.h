@@ -49,7 +49,7 @@ class CapUnit {
     }
     if (loPlane >= 0) {
       // f(lo) · 2^(e + 2 Fz) = a lo² + 2 b lo 2^Fz + c 2^(2 Fz)
-      const i128 f = s.a * lo * lo + ((2 * b * lo) << Fz) + (c << (2 * Fz));
+      const i128 f = s.a * lo * lo + shl(2 * b * lo, Fz) + shl(c, 2 * Fz);
       if (f <= 0 && ClipUnit::keptByAll(s.planes, hRaw, lo, Fz, loPlane)) {
         d.cap = true;
         d.plane = loPlane;

@@ -14,7 +14,7 @@ namespace qacc {
 class ClipUnit {
  public:
   static bool keeps(const PlaneSetup& p, i128 hRaw, i128 z, int Fz) {
-    const i128 v = (hRaw << Fz) + p.pz * z;
+    const i128 v = shl(hRaw, Fz) + p.pz * z;
     return v < 0 || (v == 0 && p.owns);
   }
   // Every plane but `except` keeps depth z (hRaw: the planes' interpolated h values).

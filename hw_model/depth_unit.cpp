@@ -19,11 +19,11 @@ DepthRoots DepthUnit::roots(const PrimitiveSetup& s, const HwConfig& cfg, i128 b
     }
     if (s.a == 0) {
       r.count = 1;
-      r.z[0] = clampDepth(divRound(c << Fz, q, cfg.rounding), cfg, ovf);
+      r.z[0] = clampDepth(divRound(shl(c, Fz), q, cfg.rounding), cfg, ovf);
       return r;
     }
-    i128 z1 = clampDepth(divRound(q << Fz, s.a, cfg.rounding), cfg, ovf);
-    i128 z2 = clampDepth(divRound(c << Fz, q, cfg.rounding), cfg, ovf);
+    i128 z1 = clampDepth(divRound(shl(q, Fz), s.a, cfg.rounding), cfg, ovf);
+    i128 z2 = clampDepth(divRound(shl(c, Fz), q, cfg.rounding), cfg, ovf);
     if (z2 < z1) std::swap(z1, z2);
     r.count = 2;
     r.z[0] = z1;

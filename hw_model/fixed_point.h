@@ -15,6 +15,10 @@ namespace qacc {
 
 using i128 = __int128;
 
+// v · 2^n for a signed v: a left shift of a negative value is undefined in C++17, the
+// multiplication by a power of two is not (and compiles to the same shift).
+inline i128 shl(i128 v, int n) { return v * (i128(1) << n); }
+
 enum class Rounding { Truncate, Nearest, NearestEven };
 enum class OverflowMode { Saturate, Wrap };
 
@@ -51,7 +55,7 @@ inline i128 shiftRound(i128 v, int shift, Rounding r) {
   if (shift <= 0) return v * (i128(1) << (-shift));
   const i128 floorv = v >> shift;  // arithmetic: floor
   if (r == Rounding::Truncate) return floorv;
-  const i128 rem = v - (floorv << shift);  // in [0, 2^shift)
+  const i128 rem = v - shl(floorv, shift);  // in [0, 2^shift)
   const i128 half = i128(1) << (shift - 1);
   if (rem > half) return floorv + 1;
   if (rem < half) return floorv;

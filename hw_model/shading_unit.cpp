@@ -53,10 +53,10 @@ void ShadingUnit::normalize(const i128 in[3], const HwConfig& cfg, i128 out[3]) 
   const int nb = cfg.normal_bits, uf = cfg.unit_frac_bits, G = 8;
   const int shift = len - (nb - 1);  // leading-zero normaliser
   i128 n[3];
-  for (int k = 0; k < 3; ++k) n[k] = shift > 0 ? shiftRound(in[k], shift, cfg.rounding) : in[k] << (-shift);
+  for (int k = 0; k < 3; ++k) n[k] = shift > 0 ? shiftRound(in[k], shift, cfg.rounding) : shl(in[k], -shift);
   const i128 len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   // Reciprocal square root: R = 2^(uf + G + nb - 1) / sqrt(len2 · 2^2G), then unit = n R >> (nb - 1).
-  const i128 root = i128(SqrtUnit::compute((unsigned __int128)(len2 << (2 * G))));
+  const i128 root = i128(SqrtUnit::compute((unsigned __int128)shl(len2, 2 * G)));
   if (root == 0) {
     out[0] = out[1] = out[2] = 0;
     return;
@@ -69,7 +69,7 @@ namespace {
 
 inline i128 evalField(const VectorSetup& f, int k, int u, int v, i128 z, int Fz) {
   const LinearCoefficients& c = f.uv[k];
-  return ((c.A * u + c.B * v + c.C) << Fz) + f.cz[k] * z;
+  return shl(c.A * u + c.B * v + c.C, Fz) + f.cz[k] * z;
 }
 
 inline i128 dot(const i128 a[3], const i128 b[3], int uf, Rounding r) {
