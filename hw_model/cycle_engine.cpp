@@ -37,13 +37,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   const int nt = threads > 0 ? threads : omp_get_max_threads();
   HwRender out;
   HwStats& st = out.stats;
-  st.engine = "hw-cycle";
-  st.config = cfg.name;
-  st.scene = scene.name;
-  st.width = scene.width;
-  st.height = scene.height;
-  st.threads = nt;
-  st.clock_mhz = cfg.clock_mhz;
+  st.describeRun("hw-cycle", cfg.name, scene.name, scene.width, scene.height, nt, cfg.clock_mhz);
 
   // The setup arithmetic is computed up front (in parallel); the setup unit's timing is
   // simulated below from each primitive's operation count.

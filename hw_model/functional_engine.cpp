@@ -22,13 +22,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   const int nt = threads > 0 ? threads : omp_get_max_threads();
   HwRender out;
   HwStats& st = out.stats;
-  st.engine = "hw";
-  st.config = cfg.name;
-  st.scene = scene.name;
-  st.width = W;
-  st.height = H;
-  st.threads = nt;
-  st.clock_mhz = cfg.clock_mhz;
+  st.describeRun("hw", cfg.name, scene.name, W, H, nt, cfg.clock_mhz);
 
   const HwSceneSetup hs = HwSceneSetup::build(scene, cfg, nt);
   st.overflow.add(hs.overflow);

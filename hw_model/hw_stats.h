@@ -55,6 +55,17 @@ struct HwStats {
   double host_seconds = 0;           // wall time of the render
   double loop_seconds = 0;           // hw-cycle: wall time of the cycle loop alone (one core)
 
+  // The run's identity: engine, configuration, scene, image size, threads and clock.
+  void describeRun(const std::string& engineName, const std::string& configName, const std::string& sceneName,
+                   int w, int h, int nthreads, double clockMhz) {
+    engine = engineName;
+    config = configName;
+    scene = sceneName;
+    width = w;
+    height = h;
+    threads = nthreads;
+    clock_mhz = clockMhz;
+  }
   double frameSeconds() const { return clock_mhz > 0 ? double(cycles) / (clock_mhz * 1e6) : 0; }
   double overdraw() const;  // covered / distinct pixels written
   std::uint64_t distinct_written = 0;  // pixels showing an object at the end
