@@ -51,17 +51,21 @@ inline i128 fitWidth(i128 v, int width, OverflowMode mode, OverflowCounter& ovf)
 }
 
 // v · 2^-shift rounded with the given mode (shift >= 0); shift <= 0 multiplies exactly.
-inline i128 shiftRound(i128 v, int shift, Rounding r) {
-  if (shift <= 0) return v * (i128(1) << (-shift));
-  const i128 floorv = v >> shift;  // arithmetic: floor
+// T is the register type: i128 in general, std::int64_t where a datapath's widths are
+// known to fit (same result, cheaper on the host).
+template <typename T>
+inline T shiftRoundT(T v, int shift, Rounding r) {
+  if (shift <= 0) return v * (T(1) << (-shift));
+  const T floorv = v >> shift;  // arithmetic: floor
   if (r == Rounding::Truncate) return floorv;
-  const i128 rem = v - shl(floorv, shift);  // in [0, 2^shift)
-  const i128 half = i128(1) << (shift - 1);
+  const T rem = v - floorv * (T(1) << shift);  // in [0, 2^shift)
+  const T half = T(1) << (shift - 1);
   if (rem > half) return floorv + 1;
   if (rem < half) return floorv;
   if (r == Rounding::Nearest) return floorv + 1;  // ties up
   return (floorv & 1) ? floorv + 1 : floorv;       // ties to even
 }
+inline i128 shiftRound(i128 v, int shift, Rounding r) { return shiftRoundT<i128>(v, shift, r); }
 
 // Integer quotient num / den (den != 0) with the given rounding (Truncate = toward zero).
 inline i128 divRound(i128 num, i128 den, Rounding r) {

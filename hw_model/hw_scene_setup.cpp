@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "hw_model/setup_unit.h"
@@ -28,26 +30,36 @@ ZBufferState::ZBufferState(int w, int h)
     : width(w), height(h), z(std::size_t(w) * h, std::numeric_limits<std::uint32_t>::max()),
       prim(std::size_t(w) * h, -1), depth(std::size_t(w) * h, 0), cap(std::size_t(w) * h, -1) {}
 
+void resolvePixel(const HwConfig& cfg, const HwSceneSetup& hs, int x, int y, std::uint32_t zval, int prim,
+                  std::int64_t depth, int cap, FrameBuffer& fb, OverflowCounter& ovf) {
+  const std::size_t pix = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
+  const PrimitiveSetup& s = hs.setups[std::size_t(prim)];
+  const auto rgb = ShadingUnit::shade(s, hs.lighting, cfg, x - s.x0, y - s.y0, depth, cap, ovf);
+  for (int c = 0; c < 3; ++c) fb.color.data[pix * 3 + c] = rgb[std::size_t(c)];
+  fb.depth[pix] = (double(zval) + 0.5) * std::ldexp(1.0, -cfg.zbuffer_bits);
+  fb.object[pix] = s.object;
+  fb.primitive[pix] = prim;
+}
+
+void ZBufferState::clear() {
+  std::fill(z.begin(), z.end(), std::numeric_limits<std::uint32_t>::max());
+  std::fill(prim.begin(), prim.end(), -1);
+  std::fill(depth.begin(), depth.end(), 0);
+  std::fill(cap.begin(), cap.end(), std::int16_t(-1));
+}
+
 FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const HwSceneSetup& hs, const ZBufferState& zb,
                          int threads, HwStats& stats) {
   FrameBuffer fb(scene.width, scene.height, toSrgb8(scene.background));
   const int nt = threads > 0 ? threads : omp_get_max_threads();
-  const double lsb = std::ldexp(1.0, -cfg.zbuffer_bits);
   std::uint64_t distinct = 0;
-  OverflowCounter ovf;
 #pragma omp parallel for schedule(dynamic, 8) num_threads(nt) reduction(+ : distinct)
   for (int y = 0; y < scene.height; ++y) {
     OverflowCounter local;
     for (int x = 0; x < scene.width; ++x) {
       const std::size_t pix = std::size_t(y) * scene.width + x;
-      const int p = zb.prim[pix];
-      if (p < 0) continue;
-      const PrimitiveSetup& s = hs.setups[std::size_t(p)];
-      const auto rgb = ShadingUnit::shade(s, hs.lighting, cfg, x - s.x0, y - s.y0, zb.depth[pix], zb.cap[pix], local);
-      for (int c = 0; c < 3; ++c) fb.color.data[pix * 3 + c] = rgb[std::size_t(c)];
-      fb.depth[pix] = (double(zb.z[pix]) + 0.5) * lsb;
-      fb.object[pix] = s.object;
-      fb.primitive[pix] = p;
+      if (zb.prim[pix] < 0) continue;
+      resolvePixel(cfg, hs, x, y, zb.z[pix], zb.prim[pix], zb.depth[pix], zb.cap[pix], fb, local);
       ++distinct;
     }
   }

@@ -31,7 +31,13 @@ struct ZBufferState {
   std::vector<std::int16_t> cap;    // its cap plane (-1 = surface)
   ZBufferState(int w, int h);
   std::size_t size() const { return z.size(); }
+  void clear();  // back to the cleared state (no winner anywhere)
 };
+
+// Shades one Z-buffer winner (ShadingUnit::shade) into pixel (x, y) of the frame buffer:
+// colour, window depth from the stored Z value, object and primitive.
+void resolvePixel(const HwConfig& cfg, const HwSceneSetup& hs, int x, int y, std::uint32_t zval, int prim,
+                  std::int64_t depth, int cap, FrameBuffer& fb, OverflowCounter& ovf);
 
 // Shades the winners (ShadingUnit::shade) into a frame buffer; counts distinct pixels.
 FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const HwSceneSetup& hs, const ZBufferState& zb,

@@ -43,7 +43,14 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg) {
   return L;
 }
 
-void ShadingUnit::normalize(const i128 in[3], const HwConfig& cfg, i128 out[3]) {
+namespace {
+
+// The shading datapath after the exact field evaluation, with registers of type T. Every
+// value after the leading-zero normaliser has at most normal_bits bits, so T =
+// std::int64_t holds all of it when normal_bits <= 23 (len² · 2^2G < 3 · 2^60); the i128
+// instantiation serves wider configurations. Both give the same bits.
+template <typename T>
+void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
   int len = 0;
   for (int k = 0; k < 3; ++k) len = std::max(len, bitLength(in[k]));
   if (len == 0) {
@@ -52,79 +59,88 @@ void ShadingUnit::normalize(const i128 in[3], const HwConfig& cfg, i128 out[3]) 
   }
   const int nb = cfg.normal_bits, uf = cfg.unit_frac_bits, G = 8;
   const int shift = len - (nb - 1);  // leading-zero normaliser
-  i128 n[3];
-  for (int k = 0; k < 3; ++k) n[k] = shift > 0 ? shiftRound(in[k], shift, cfg.rounding) : shl(in[k], -shift);
-  const i128 len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  T n[3];
+  for (int k = 0; k < 3; ++k) n[k] = T(shift > 0 ? shiftRound(in[k], shift, cfg.rounding) : shl(in[k], -shift));
+  const T len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   // Reciprocal square root: R = 2^(uf + G + nb - 1) / sqrt(len2 · 2^2G), then unit = n R >> (nb - 1).
-  const i128 root = i128(SqrtUnit::compute((unsigned __int128)shl(len2, 2 * G)));
+  const T root = T(SqrtUnit::compute((unsigned __int128)(len2 * (T(1) << (2 * G)))));
   if (root == 0) {
     out[0] = out[1] = out[2] = 0;
     return;
   }
-  const i128 R = divRound(i128(1) << (uf + G + nb - 1), root, cfg.rounding);
-  for (int k = 0; k < 3; ++k) out[k] = shiftRound(n[k] * R, nb - 1, cfg.rounding);
+  const T R = T(divRound(i128(1) << (uf + G + nb - 1), root, cfg.rounding));
+  for (int k = 0; k < 3; ++k) out[k] = shiftRoundT<T>(n[k] * R, nb - 1, cfg.rounding);
 }
-
-namespace {
 
 inline i128 evalField(const VectorSetup& f, int k, int u, int v, i128 z, int Fz) {
   const LinearCoefficients& c = f.uv[k];
   return shl(c.A * u + c.B * v + c.C, Fz) + f.cz[k] * z;
 }
 
-inline i128 dot(const i128 a[3], const i128 b[3], int uf, Rounding r) {
-  return shiftRound(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf, r);
+template <typename T>
+inline T dot(const T a[3], const T b[3], int uf, Rounding r) {
+  return shiftRoundT<T>(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf, r);
 }
 
-}  // namespace
-
-std::array<std::uint8_t, 3> ShadingUnit::shade(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg,
-                                               int u, int v, i128 z, int cap, OverflowCounter& ovf) {
-  (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
+template <typename T>
+std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
+                                   int v, i128 z, int cap) {
   const int Fz = cfg.depth_frac_bits, uf = cfg.unit_frac_bits, cf = cfg.color_frac_bits;
   const Rounding rm = cfg.rounding;
-  i128 raw[3], N[3], V[3];
+  i128 raw[3];
+  T N[3], V[3];
   if (cap >= 0) {
     for (int k = 0; k < 3; ++k) raw[k] = s.planes[std::size_t(cap)].capNormal[k];
   } else {
     for (int k = 0; k < 3; ++k) raw[k] = evalField(s.normal, k, u, v, z, Fz);
   }
-  normalize(raw, cfg, N);
+  normalizeT<T>(raw, cfg, N);
   for (int k = 0; k < 3; ++k) raw[k] = evalField(s.view, k, u, v, z, Fz);
-  normalize(raw, cfg, V);
-  if (dot(N, V, uf, rm) < 0)
+  normalizeT<T>(raw, cfg, V);
+  if (dot<T>(N, V, uf, rm) < 0)
     for (int k = 0; k < 3; ++k) N[k] = -N[k];  // two-sided
   const int mi = s.material >= 0 && s.material < int(L.materials.size()) ? s.material : 0;
   const LightingSetup::MaterialQ& m = L.materials[std::size_t(mi)];
-  const i128 one = i128(1) << uf;
-  i128 out[3] = {0, 0, 0};
+  const T one = T(1) << uf;
+  T out[3] = {0, 0, 0};
   for (const LightingSetup::LightQ& l : L.lights) {
     if (l.type == Light::Type::Ambient) {
-      for (int k = 0; k < 3; ++k) out[k] += shiftRound(l.color[k] * m.color[k], cf, rm);
+      for (int k = 0; k < 3; ++k) out[k] += shiftRoundT<T>(T(l.color[k]) * T(m.color[k]), cf, rm);
       continue;
     }
-    i128 Lv[3];
+    T Lv[3];
     if (l.type == Light::Type::Directional) {
-      for (int k = 0; k < 3; ++k) Lv[k] = l.dir[k];
+      for (int k = 0; k < 3; ++k) Lv[k] = T(l.dir[k]);
     } else {
       for (int k = 0; k < 3; ++k) raw[k] = evalField(s.pointLights[std::size_t(l.point)], k, u, v, z, Fz);
-      normalize(raw, cfg, Lv);
+      normalizeT<T>(raw, cfg, Lv);
     }
-    const i128 ndl = std::min(dot(N, Lv, uf, rm), one);
+    const T ndl = std::min(dot<T>(N, Lv, uf, rm), one);
     if (ndl <= 0) continue;
-    i128 H[3], hs[3];
-    for (int k = 0; k < 3; ++k) hs[k] = Lv[k] + V[k];
-    normalize(hs, cfg, H);
-    const i128 ndh = std::clamp<i128>(dot(N, H, uf, rm), 0, one);
-    const i128 spec = m.specular[std::size_t(ndh)];
-    for (int k = 0; k < 3; ++k) out[k] += shiftRound(l.color[k] * (shiftRound(m.color[k] * ndl, uf, rm) + spec), cf, rm);
+    T H[3];
+    i128 hs[3];
+    for (int k = 0; k < 3; ++k) hs[k] = i128(Lv[k]) + i128(V[k]);
+    normalizeT<T>(hs, cfg, H);
+    const T ndh = std::clamp<T>(dot<T>(N, H, uf, rm), 0, one);
+    const T spec = m.specular[std::size_t(ndh)];
+    for (int k = 0; k < 3; ++k)
+      out[k] += shiftRoundT<T>(T(l.color[k]) * (shiftRoundT<T>(T(m.color[k]) * ndl, uf, rm) + spec), cf, rm);
   }
   std::array<std::uint8_t, 3> rgb;
-  const i128 top = i128(1) << cf;
-  for (int k = 0; k < 3; ++k) {
-    rgb[std::size_t(k)] = L.srgb[std::size_t(std::clamp<i128>(out[k], 0, top))];
-  }
+  const T top = T(1) << cf;
+  for (int k = 0; k < 3; ++k) rgb[std::size_t(k)] = L.srgb[std::size_t(std::clamp<T>(out[k], 0, top))];
   return rgb;
+}
+
+}  // namespace
+
+void ShadingUnit::normalize(const i128 in[3], const HwConfig& cfg, i128 out[3]) { normalizeT<i128>(in, cfg, out); }
+
+std::array<std::uint8_t, 3> ShadingUnit::shade(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg,
+                                               int u, int v, i128 z, int cap, OverflowCounter& ovf) {
+  (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
+  if (cfg.normal_bits <= 23) return shadeT<std::int64_t>(s, L, cfg, u, v, z, cap);
+  return shadeT<i128>(s, L, cfg, u, v, z, cap);
 }
 
 bool ShadingUnit::tick(std::uint64_t now) {
