@@ -9,6 +9,7 @@
 #include "hw_model/host_interface.h"
 #include "hw_model/hw_scene_setup.h"
 #include "hw_model/pixel_pipeline_unit.h"
+#include "hw_model/pixel_trace.h"
 #include "hw_model/setup_unit.h"
 #include "hw_model/shading_unit.h"
 #include "hw_model/traversal_unit.h"
@@ -37,12 +38,17 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   const int nt = threads > 0 ? threads : omp_get_max_threads();
   HwRender out;
   HwStats& st = out.stats;
-  st.describeRun("hw-cycle", cfg.name, scene.name, scene.width, scene.height, nt, cfg.clock_mhz);
+  st.describeRun("hw-cycle", cfg, scene.name, scene.width, scene.height, nt);
 
   // The setup arithmetic is computed up front (in parallel); the setup unit's timing is
   // simulated below from each primitive's operation count.
   const HwSceneSetup hs = HwSceneSetup::build(scene, cfg, nt);
   st.overflow.add(hs.overflow);
+  // So is the pixel arithmetic (functional-first, timing-directed: pixel_trace.h).
+  const auto tr0 = std::chrono::steady_clock::now();
+  const PixelTrace trace = PixelTrace::build(hs.setups, cfg, nt);
+  st.trace_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count();
+  st.overflow.add(trace.overflow);
   st.primitives = hs.setups.size();
   for (const PrimitiveSetup& s : hs.setups) {
     st.visible_primitives += s.visible;
@@ -63,8 +69,8 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   units.push_back(std::make_unique<SetupUnit>(hs.setups, cfg, hostFifo, setupFifo));
   units.push_back(std::make_unique<TraversalUnit>(hs.setups, cfg, setupFifo, pixFifo));
   for (std::size_t p = 0; p < P; ++p)
-    units.push_back(std::make_unique<PixelPipelineUnit>("pixel_pipeline_" + std::to_string(p), hs.setups, cfg,
-                                                        pixFifo[p], zFifo[p], st.pixels, st.overflow));
+    units.push_back(std::make_unique<PixelPipelineUnit>("pixel_pipeline_" + std::to_string(p), trace, cfg,
+                                                        pixFifo[p], zFifo[p], st.pixels));
   units.push_back(std::make_unique<ZBufferUnit>(cfg, zb, zFifo, shadeFifo, st.pixels));
   for (std::size_t p = 0; p < P; ++p)
     units.push_back(std::make_unique<ShadingUnit>("shading_" + std::to_string(p), cfg, shadeFifo[p],
@@ -88,19 +94,32 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   };
 
   const auto loop0 = std::chrono::steady_clock::now();
+  // The frame ends with the first cycle after which no unit holds work and every FIFO is
+  // empty. That state can only be entered by a cycle where something changed, and the
+  // cycle after it changes nothing, so the check runs only on unchanged cycles: ending
+  // there, the frame took one cycle less than the loop ran.
   std::uint64_t now = 0, quiet = 0;
+  bool prevChanged = false;
   for (;;) {
     bool changed = false;
     for (auto& u : units) changed |= u->tick(now);
     changed |= commitAll();
     ++now;
-    bool working = !fifosIdle();
-    for (auto& u : units) working |= u->holdsWork();
-    if (!working) break;
     if (changed) {
       quiet = 0;
+      prevChanged = true;
       continue;
     }
+    bool working = !fifosIdle();
+    for (auto& u : units) working |= u->holdsWork();
+    if (!working) {
+      if (prevChanged) {  // the idle cycle the loop ran past the end is not part of the frame
+        --now;
+        for (auto& u : units) u->retractIdle();
+      }
+      break;
+    }
+    prevChanged = false;
     // Nothing moved: jump to the next timed event.
     std::uint64_t next = std::numeric_limits<std::uint64_t>::max();
     for (auto& u : units) next = std::min(next, u->nextEvent());

@@ -24,7 +24,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   const int nt = threads > 0 ? threads : omp_get_max_threads();
   HwRender out;
   HwStats& st = out.stats;
-  st.describeRun("hw", cfg.name, scene.name, W, H, nt, cfg.clock_mhz);
+  st.describeRun("hw", cfg, scene.name, W, H, nt);
 
   const HwSceneSetup hs = HwSceneSetup::build(scene, cfg, nt);
   st.overflow.add(hs.overflow);
@@ -90,8 +90,8 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
       for (int y = ty0; y < ty1; ++y)
         for (int x = tx0; x < tx1; ++x) {
           const std::size_t pix = std::size_t(y - ty0) * kTile + std::size_t(x - tx0);
-          if (zb.prim[pix] < 0) continue;
-          resolvePixel(cfg, hs, x, y, zb.z[pix], zb.prim[pix], zb.depth[pix], zb.cap[pix], fb, ovf.shading);
+          if (zb.px[pix].prim < 0) continue;
+          resolvePixel(cfg, hs, x, y, zb.px[pix], fb, ovf.shading);
           ++distinct;
         }
     }

@@ -27,26 +27,20 @@ HwSceneSetup HwSceneSetup::build(const Scene& scene, const HwConfig& cfg, int th
 }
 
 ZBufferState::ZBufferState(int w, int h)
-    : width(w), height(h), z(std::size_t(w) * h, std::numeric_limits<std::uint32_t>::max()),
-      prim(std::size_t(w) * h, -1), depth(std::size_t(w) * h, 0), cap(std::size_t(w) * h, -1) {}
+    : width(w), height(h), px(std::size_t(w) * std::size_t(h)) {}
 
-void resolvePixel(const HwConfig& cfg, const HwSceneSetup& hs, int x, int y, std::uint32_t zval, int prim,
-                  std::int64_t depth, int cap, FrameBuffer& fb, OverflowCounter& ovf) {
+void resolvePixel(const HwConfig& cfg, const HwSceneSetup& hs, int x, int y, const ZEntry& e, FrameBuffer& fb,
+                  OverflowCounter& ovf) {
   const std::size_t pix = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
-  const PrimitiveSetup& s = hs.setups[std::size_t(prim)];
-  const auto rgb = ShadingUnit::shade(s, hs.lighting, cfg, x - s.x0, y - s.y0, depth, cap, ovf);
+  const PrimitiveSetup& s = hs.setups[std::size_t(e.prim)];
+  const auto rgb = ShadingUnit::shade(s, hs.lighting, cfg, x - s.x0, y - s.y0, e.depth, e.cap, ovf);
   for (int c = 0; c < 3; ++c) fb.color.data[pix * 3 + c] = rgb[std::size_t(c)];
-  fb.depth[pix] = (double(zval) + 0.5) * std::ldexp(1.0, -cfg.zbuffer_bits);
+  fb.depth[pix] = (double(e.z) + 0.5) * std::ldexp(1.0, -cfg.zbuffer_bits);
   fb.object[pix] = s.object;
-  fb.primitive[pix] = prim;
+  fb.primitive[pix] = e.prim;
 }
 
-void ZBufferState::clear() {
-  std::fill(z.begin(), z.end(), std::numeric_limits<std::uint32_t>::max());
-  std::fill(prim.begin(), prim.end(), -1);
-  std::fill(depth.begin(), depth.end(), 0);
-  std::fill(cap.begin(), cap.end(), std::int16_t(-1));
-}
+void ZBufferState::clear() { std::fill(px.begin(), px.end(), ZEntry{}); }
 
 FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const HwSceneSetup& hs, const ZBufferState& zb,
                          int threads, HwStats& stats) {
@@ -58,8 +52,8 @@ FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const HwSceneS
     OverflowCounter local;
     for (int x = 0; x < scene.width; ++x) {
       const std::size_t pix = std::size_t(y) * scene.width + x;
-      if (zb.prim[pix] < 0) continue;
-      resolvePixel(cfg, hs, x, y, zb.z[pix], zb.prim[pix], zb.depth[pix], zb.cap[pix], fb, local);
+      if (zb.px[pix].prim < 0) continue;
+      resolvePixel(cfg, hs, x, y, zb.px[pix], fb, local);
       ++distinct;
     }
   }

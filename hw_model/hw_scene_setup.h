@@ -22,22 +22,28 @@ struct HwSceneSetup {
   static HwSceneSetup build(const Scene& scene, const HwConfig& cfg, int threads);
 };
 
-// What the Z-buffer holds per pixel at the end of the frame.
+// What the Z-buffer holds per pixel: the stored Z value and, for the final shading, the
+// winner's identity and internal depth. One record per pixel, so a Z test touches one
+// cache line.
+struct ZEntry {
+  std::int64_t depth = 0;                // the winner's depth in the internal format
+  std::uint32_t z = 0xFFFFFFFFu;         // stored Z value (UINT32_MAX = cleared)
+  std::int32_t prim = -1;                // winning primitive (-1 = none)
+  std::int16_t cap = -1;                 // its cap plane (-1 = surface)
+};
+
 struct ZBufferState {
   int width = 0, height = 0;
-  std::vector<std::uint32_t> z;     // stored depth (UINT32_MAX = cleared)
-  std::vector<std::int32_t> prim;   // winning primitive (-1 = none)
-  std::vector<std::int64_t> depth;  // its depth in the internal format
-  std::vector<std::int16_t> cap;    // its cap plane (-1 = surface)
+  std::vector<ZEntry> px;
   ZBufferState(int w, int h);
-  std::size_t size() const { return z.size(); }
+  std::size_t size() const { return px.size(); }
   void clear();  // back to the cleared state (no winner anywhere)
 };
 
 // Shades one Z-buffer winner (ShadingUnit::shade) into pixel (x, y) of the frame buffer:
 // colour, window depth from the stored Z value, object and primitive.
-void resolvePixel(const HwConfig& cfg, const HwSceneSetup& hs, int x, int y, std::uint32_t zval, int prim,
-                  std::int64_t depth, int cap, FrameBuffer& fb, OverflowCounter& ovf);
+void resolvePixel(const HwConfig& cfg, const HwSceneSetup& hs, int x, int y, const ZEntry& e, FrameBuffer& fb,
+                  OverflowCounter& ovf);
 
 // Shades the winners (ShadingUnit::shade) into a frame buffer; counts distinct pixels.
 FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const HwSceneSetup& hs, const ZBufferState& zb,

@@ -1,5 +1,6 @@
 #include "hw_model/hw_stats.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -73,10 +74,15 @@ nlohmann::ordered_json toJ(const HwStats& s) {
   j["slowdown"] = ft > 0 ? s.host_seconds / ft : 0.0;
   j["loop_seconds"] = s.loop_seconds;
   j["loop_cycles_per_second"] = s.loop_seconds > 0 ? double(s.cycles) / s.loop_seconds : 0.0;
+  j["trace_seconds"] = s.trace_seconds;
   nlohmann::ordered_json units = nlohmann::ordered_json::array();
   for (const auto& u : s.units)
     units.push_back({{"name", u.name}, {"busy", u.busy}, {"stall", u.stall}, {"idle", u.idle}, {"items", u.items}});
   j["units"] = units;
+  nlohmann::ordered_json cost = nlohmann::ordered_json::array();
+  for (const UnitCost& u : s.cost.units)
+    cost.push_back({{"name", u.unit}, {"copies", u.copies}, {"ge_each", u.ge_each}, {"rom_bits", u.rom_bits}});
+  j["cost"] = {{"total_ge", s.cost.totalGe()}, {"zbuffer_bits_per_pixel", s.cost.zbufferBitsPerPixel}, {"units", cost}};
   return j;
 }
 
@@ -144,13 +150,22 @@ std::vector<std::string> HwStats::summaryLines() const {
   if (cycles > 0) {
     const double ft = frameSeconds();
     std::snprintf(buf, sizeof buf,
-                  "cycles %llu at %.1f MHz: frame %.3f ms (%.1f fps), %.3g quadrics/s, %.3g pixels/s; host %.3f s, %.3g simulated cycles/s (cycle loop alone %.3g), slowdown %.0fx",
+                  "cycles %llu at %.1f MHz: frame %.3f ms (%.1f fps), %.3g quadrics/s, %.3g pixels/s; host %.3f s, %.3g simulated cycles/s (timing loop alone %.3g; pixel datapath pass %.3f s), slowdown %.0fx",
                   (unsigned long long)cycles, clock_mhz, ft * 1e3, ft > 0 ? 1.0 / ft : 0.0,
                   ft > 0 ? double(visible_primitives) / ft : 0.0, ft > 0 ? double(pixels.covered) / ft : 0.0,
                   host_seconds, host_seconds > 0 ? double(cycles) / host_seconds : 0.0,
-                  loop_seconds > 0 ? double(cycles) / loop_seconds : 0.0, ft > 0 ? host_seconds / ft : 0.0);
+                  loop_seconds > 0 ? double(cycles) / loop_seconds : 0.0, trace_seconds, ft > 0 ? host_seconds / ft : 0.0);
     out.push_back(buf);
   }
+  std::string cost = "silicon (cost model): " + std::to_string(int(std::lround(this->cost.totalGe() / 1e3))) + " kGE =";
+  for (std::size_t i = 0; i < this->cost.units.size(); ++i) {
+    const UnitCost& u = this->cost.units[i];
+    std::snprintf(buf, sizeof buf, "%s %s %s%.1f", i ? " +" : "", u.unit.c_str(),
+                  u.copies > 1 ? (std::to_string(u.copies) + " x ").c_str() : "", u.ge_each / 1e3);
+    cost += buf;
+  }
+  out.push_back(cost + " kGE; Z-buffer memory off-chip, " + std::to_string(int(this->cost.zbufferBitsPerPixel)) +
+                " bits per pixel");
   return out;
 }
 

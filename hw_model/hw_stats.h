@@ -4,7 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "hw_model/cost_model.h"
 #include "hw_model/fixed_point.h"
+#include "hw_model/hw_config.h"
 
 namespace qacc {
 
@@ -53,18 +55,22 @@ struct HwStats {
   std::vector<UnitStats> units;
   double clock_mhz = 0;
   double host_seconds = 0;           // wall time of the render
-  double loop_seconds = 0;           // hw-cycle: wall time of the cycle loop alone (one core)
+  double loop_seconds = 0;           // hw-cycle: wall time of the timing loop alone (one core)
+  double trace_seconds = 0;          // hw-cycle: wall time of the pixel datapath pass (pixel_trace.h)
 
-  // The run's identity: engine, configuration, scene, image size, threads and clock.
-  void describeRun(const std::string& engineName, const std::string& configName, const std::string& sceneName,
-                   int w, int h, int nthreads, double clockMhz) {
+  CostModel cost;                    // silicon cost of the configuration
+
+  // The run's identity: engine, configuration (name, clock, cost), scene, image size, threads.
+  void describeRun(const std::string& engineName, const HwConfig& cfg, const std::string& sceneName, int w, int h,
+                   int nthreads) {
     engine = engineName;
-    config = configName;
+    config = cfg.name;
     scene = sceneName;
     width = w;
     height = h;
     threads = nthreads;
-    clock_mhz = clockMhz;
+    clock_mhz = cfg.clock_mhz;
+    cost = CostModel::of(cfg);
   }
   double frameSeconds() const { return clock_mhz > 0 ? double(cycles) / (clock_mhz * 1e6) : 0; }
   double overdraw() const;  // covered / distinct pixels written

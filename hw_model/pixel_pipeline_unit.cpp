@@ -21,22 +21,17 @@ bool PixelPipelineUnit::tick(std::uint64_t now) {
   if (now >= nextAccept_ && !in_.empty()) {
     const PixelToken t = in_.front();
     in_.pop();
-    if (t.prim != currentPrim_) {
-      currentPrim_ = t.prim;
-      pipe_ = std::make_unique<PixelPipeline>(setups_[std::size_t(t.prim)], cfg_);
-    }
-    const PrimitiveSetup& s = setups_[std::size_t(t.prim)];
-    const PixelOutcome o = pipe_->evaluateAt(t.x - s.x0, t.y - s.y0, ovf_);
+    const TracedPixel& o = trace_.prims[std::size_t(t.prim)][std::size_t(t.k)];
     ++px_.tested;
     px_.clip_passes += std::uint64_t(o.clipPasses);
     if (o.hit) {
       ++px_.covered;
       px_.caps += o.cap >= 0;
     } else {
-      px_.clipped += o.candidate;
+      px_.clipped += o.candidate != 0;
     }
-    inflight_.push_back({now + latency_, o.hit, {t.prim, t.x, t.y, o.cap, o.z}});
-    nextAccept_ = now + std::uint64_t(std::max(1, o.clipPasses));
+    inflight_.push_back({now + latency_, o.hit != 0, {t.prim, t.x, t.y, o.cap, o.z}});
+    nextAccept_ = now + std::uint64_t(std::max(1, int(o.clipPasses)));
     countItem();
     changed = true;
   }

@@ -1,16 +1,17 @@
 // PixelPipelineUnit: timing of one pixel pipeline (interpolators, square root, depth,
-// clip, caps; PixelPipeline holds the arithmetic). Fully pipelined: accepts one pixel per
-// cycle, or one every `clip passes` cycles when a primitive has more planes than the K
-// clip evaluators; results leave in order after pixelPipelineLatency() cycles; pixels
-// with a visible point go on to the Z-buffer, the others retire.
+// clip, caps; PixelPipeline holds the arithmetic, whose result for each issued pixel the
+// unit takes from the PixelTrace). Fully pipelined: accepts one pixel per cycle, or one
+// every `clip passes` cycles when a primitive has more planes than the K clip evaluators;
+// results leave in order after pixelPipelineLatency() cycles; pixels with a visible point
+// go on to the Z-buffer, the others retire.
 #pragma once
-#include <deque>
 #include <memory>
 #include <vector>
 
+#include "hw_model/delay_queue.h"
 #include "hw_model/fifo.h"
 #include "hw_model/hw_config.h"
-#include "hw_model/pixel_pipeline.h"
+#include "hw_model/pixel_trace.h"
 #include "hw_model/traversal_unit.h"
 #include "hw_model/unit.h"
 
@@ -25,10 +26,9 @@ struct ZRequest {
 
 class PixelPipelineUnit : public Unit {
  public:
-  PixelPipelineUnit(const std::string& name, const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg,
-                    Fifo<PixelToken>& in, Fifo<ZRequest>& out, PixelCounters& px, OverflowCounters& ovf)
-      : Unit(name), setups_(setups), cfg_(cfg), in_(in), out_(out), px_(px), ovf_(ovf),
-        latency_(std::uint64_t(cfg.pixelPipelineLatency())) {}
+  PixelPipelineUnit(const std::string& name, const PixelTrace& trace, const HwConfig& cfg, Fifo<PixelToken>& in,
+                    Fifo<ZRequest>& out, PixelCounters& px)
+      : Unit(name), trace_(trace), in_(in), out_(out), px_(px), latency_(std::uint64_t(cfg.pixelPipelineLatency())) {}
   bool tick(std::uint64_t now) override;
   std::uint64_t nextEvent() const override;
   bool holdsWork() const override { return !inflight_.empty(); }
@@ -39,17 +39,13 @@ class PixelPipelineUnit : public Unit {
     bool hit;
     ZRequest req;
   };
-  const std::vector<PrimitiveSetup>& setups_;
-  const HwConfig& cfg_;
+  const PixelTrace& trace_;
   Fifo<PixelToken>& in_;
   Fifo<ZRequest>& out_;
   PixelCounters& px_;
-  OverflowCounters& ovf_;
   std::uint64_t latency_;
-  std::deque<InFlight> inflight_;
+  DelayQueue<InFlight> inflight_;
   std::uint64_t nextAccept_ = 0;
-  int currentPrim_ = -1;
-  std::unique_ptr<PixelPipeline> pipe_;
 };
 
 }  // namespace qacc

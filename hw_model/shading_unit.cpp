@@ -143,6 +143,11 @@ std::array<std::uint8_t, 3> ShadingUnit::shade(const PrimitiveSetup& s, const Li
   return shadeT<i128>(s, L, cfg, u, v, z, cap);
 }
 
+std::array<std::uint8_t, 3> ShadingUnit::shadeWide(const PrimitiveSetup& s, const LightingSetup& L,
+                                                   const HwConfig& cfg, int u, int v, i128 z, int cap) {
+  return shadeT<i128>(s, L, cfg, u, v, z, cap);
+}
+
 bool ShadingUnit::tick(std::uint64_t now) {
   bool changed = false;
   while (!inflight_.empty() && inflight_.front().first <= now) {
@@ -151,7 +156,7 @@ bool ShadingUnit::tick(std::uint64_t now) {
     changed = true;
   }
   if (now >= nextAccept_ && !in_.empty()) {
-    inflight_.emplace_back(now + std::uint64_t(cfg_.shading_latency), in_.front());
+    inflight_.push_back({now + std::uint64_t(cfg_.shading_latency), in_.front()});
     in_.pop();
     nextAccept_ = now + std::uint64_t(cfg_.shading_cycles_per_pixel);
     countItem();

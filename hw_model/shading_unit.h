@@ -10,9 +10,9 @@
 #pragma once
 #include <array>
 #include <cstdint>
-#include <deque>
 #include <vector>
 
+#include "hw_model/delay_queue.h"
 #include "hw_model/fifo.h"
 #include "hw_model/hw_config.h"
 #include "hw_model/primitive_setup.h"
@@ -51,6 +51,10 @@ class ShadingUnit : public Unit {
  public:
   static std::array<std::uint8_t, 3> shade(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg,
                                            int u, int v, i128 z, int cap, OverflowCounter& ovf);
+  // The same datapath with 128-bit registers throughout (shade() uses 64-bit registers
+  // where the widths allow; the two must agree bit for bit).
+  static std::array<std::uint8_t, 3> shadeWide(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg,
+                                               int u, int v, i128 z, int cap);
   // Normalises an exact vector to a unit vector in 1.unit_frac (zero stays zero).
   static void normalize(const i128 in[3], const HwConfig& cfg, i128 out[3]);
 
@@ -68,7 +72,7 @@ class ShadingUnit : public Unit {
   Fifo<ShadeRequest>& in_;
   Writer writer_;
   void* ctx_;
-  std::deque<std::pair<std::uint64_t, ShadeRequest>> inflight_;
+  DelayQueue<std::pair<std::uint64_t, ShadeRequest>> inflight_;
   std::uint64_t nextAccept_ = 0;
 };
 

@@ -84,6 +84,7 @@ bool TraversalUnit::tick(std::uint64_t now) {
     changed = true;
     const PrimitiveSetup& s = setups_[std::size_t(prim_)];
     y_ = s.y0;
+    k_ = 0;
     if (!s.visible || !nextRow()) prim_ = -1;
     countBusy();
     return changed;  // the first pixels leave next cycle (span solve)
@@ -104,7 +105,7 @@ bool TraversalUnit::tick(std::uint64_t now) {
       stalled = true;
       break;
     }
-    out_[std::size_t(p)].push({prim_, x_, y_});
+    out_[std::size_t(p)].push({prim_, x_, y_, k_++});
     used |= std::uint64_t(1) << p;
     changed = true;
     if (++x_ >= rowSpans_[span_].x1) {

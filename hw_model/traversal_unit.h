@@ -22,6 +22,7 @@ struct Span {
 struct PixelToken {
   int prim = 0;
   int x = 0, y = 0;
+  int k = 0;  // issue order within the primitive: its entry in the PixelTrace
 };
 
 class TraversalUnit : public Unit {
@@ -45,7 +46,7 @@ class TraversalUnit : public Unit {
   int prim_ = -1;
   int y_ = 0;
   Span rowSpans_[2];
-  int nSpans_ = 0, span_ = 0, x_ = 0;
+  int nSpans_ = 0, span_ = 0, x_ = 0, k_ = 0;
 };
 
 }  // namespace qacc

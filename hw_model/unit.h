@@ -31,6 +31,8 @@ class Unit {
     else stats_.idle += n;
   }
   const UnitStats& stats() const { return stats_; }
+  // Takes back one idle cycle (the engine ticked every unit once past the end of the frame).
+  void retractIdle() { --stats_.idle; }
 
  protected:
   void countBusy() { ++stats_.busy; }

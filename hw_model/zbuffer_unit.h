@@ -7,9 +7,9 @@
 // a pixel always goes through the same pipeline, so the Z test sees every pixel's
 // primitives in scene order. Pixels that pass go to that pipeline's shading unit.
 #pragma once
-#include <deque>
 #include <vector>
 
+#include "hw_model/delay_queue.h"
 #include "hw_model/fifo.h"
 #include "hw_model/hw_config.h"
 #include "hw_model/hw_scene_setup.h"
@@ -23,11 +23,9 @@ class ZBufferUnit : public Unit {
  public:
   // The functional test: true (and the buffer updated) when z is nearer than the stored depth.
   static bool testAndWrite(ZBufferState& zb, std::size_t pix, std::uint32_t z, int prim, i128 depth, int cap) {
-    if (!(z < zb.z[pix])) return false;
-    zb.z[pix] = z;
-    zb.prim[pix] = prim;
-    zb.depth[pix] = std::int64_t(depth);
-    zb.cap[pix] = std::int16_t(cap);
+    ZEntry& e = zb.px[pix];
+    if (!(z < e.z)) return false;
+    e = {std::int64_t(depth), z, prim, std::int16_t(cap)};
     return true;
   }
   static int bankOf(int x, int y, int banks) { return (x + y) % banks; }
@@ -53,7 +51,7 @@ class ZBufferUnit : public Unit {
   std::vector<Fifo<ShadeRequest>>& out_;
   PixelCounters& px_;
   std::vector<std::uint64_t> bankFree_;
-  std::vector<std::deque<InFlight>> inflight_;
+  std::vector<DelayQueue<InFlight>> inflight_;
   std::uint64_t conflicts_ = 0;
   std::size_t rr_ = 0;
 };

@@ -1,4 +1,4 @@
-// Accelerator arithmetic: square-root extractor, interpolators, fixed-point helpers.
+// Accelerator arithmetic: square-root extractor, interpolators, fixed-point helpers, shading registers.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +8,10 @@
 #include "hw_model/hw_config.h"
 #include "hw_model/linear_interpolator.h"
 #include "hw_model/quadratic_interpolator.h"
+#include "hw_model/hw_scene_setup.h"
+#include "hw_model/shading_unit.h"
 #include "hw_model/sqrt_unit.h"
+#include "modeling/scene_loader.h"
 
 using namespace qacc;
 
@@ -145,4 +148,34 @@ TEST(HwConfig, ShippedConfigurationsLoad) {
   // the shipped default is the built-in default
   HwConfig d = loadHwConfig(std::string(QACC_SOURCE_DIR) + "/hw_model/configs/default.json");
   EXPECT_EQ(hwConfigToJson(d), hwConfigToJson(HwConfig()));
+}
+
+// The shading unit computes with 64-bit registers where the widths allow; the 128-bit
+// datapath must give the same colour for every input (surface points at any depth, caps).
+TEST(ShadingUnit, SixtyFourBitRegistersGiveTheSameBitsAsOneHundredTwentyEight) {
+  for (const char* n : {"default", "minimal", "wide"}) {
+    const HwConfig cfg = loadHwConfig(std::string(QACC_SOURCE_DIR) + "/hw_model/configs/" + n + ".json");
+    Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json");
+    scene.width = 320;
+    scene.height = 240;
+    const HwSceneSetup hs = HwSceneSetup::build(scene, cfg, 1);
+    std::mt19937_64 rng(7);
+    int compared = 0;
+    for (const PrimitiveSetup& s : hs.setups) {
+      if (!s.visible) continue;
+      std::uniform_int_distribution<int> U(0, s.x1 - s.x0 - 1), V(0, s.y1 - s.y0 - 1);
+      std::uniform_int_distribution<long long> Z(0, (1LL << cfg.depth_frac_bits));
+      for (int i = 0; i < 400; ++i) {
+        const int u = U(rng), v = V(rng);
+        const i128 z = Z(rng);
+        const int cap = s.planes.empty() || i % 4 ? -1 : int(i % s.planes.size());
+        OverflowCounter ovf;
+        const auto narrow = ShadingUnit::shade(s, hs.lighting, cfg, u, v, z, cap, ovf);
+        const auto wide = ShadingUnit::shadeWide(s, hs.lighting, cfg, u, v, z, cap);
+        ASSERT_EQ(narrow, wide) << n << " primitive " << s.index << " at " << u << "," << v;
+        ++compared;
+      }
+    }
+    EXPECT_GT(compared, 1000) << n;
+  }
 }

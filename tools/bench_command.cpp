@@ -1,15 +1,18 @@
 // qacc bench [SCENE...] [--width W --height H] [--config FILE] [--threads N] [--repeat N]
 // Accelerator benchmark (issue 3): per scene (default: molecule and sphereflake at
 // 1920x1080) the reference and `hw` wall time per frame (best of --repeat), the
-// `hw-cycle` simulated cycles, its host CPU seconds (setup, simulation, final shading),
-// the simulation rate of the cycle loop alone (simulated cycles per wall second, one
-// core) and the slowdown (host seconds / modeled seconds), and the modeled frame time and fps at the
-// configured clock. Prints a table; nothing is asserted.
+// `hw-cycle` simulated cycles, its host CPU seconds (setup, pixel datapath pass, timing
+// loop, final shading), the wall time of the pixel datapath pass (pixel_trace.h), the
+// simulation rate of the timing loop alone (simulated cycles per wall second, one core),
+// the slowdown (host seconds / modeled seconds), and the modeled frame time and fps at the
+// configured clock; the header gives the configuration's silicon cost (cost_model.h).
+// Prints a table; nothing is asserted.
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <memory>
 
+#include "hw_model/cost_model.h"
 #include "hw_model/cycle_engine.h"
 #include "hw_model/functional_engine.h"
 #include "modeling/scene_loader.h"
@@ -38,10 +41,11 @@ void runBench(const BenchArgs& a) {
   std::vector<std::string> scenes = a.scenes;
   if (scenes.empty())
     scenes = {std::string(QACC_SOURCE_DIR) + "/scenes/molecule.json", std::string(QACC_SOURCE_DIR) + "/scenes/sphereflake.json"};
-  std::printf("config %s, %d MHz, P=%d, %dx%d, threads %d, best of %d\n", cfg.name.c_str(), int(cfg.clock_mhz),
-              cfg.pipelines, a.width, a.height, a.threads, a.repeat);
-  std::printf("%-14s %8s %10s %10s %7s %12s %9s %12s %9s %10s %8s\n", "scene", "prims", "ref ms", "hw ms",
-              "hw/ref", "cycles", "host s", "loop cyc/s", "slowdown", "frame ms", "fps");
+  std::printf("config %s, %d MHz, P=%d, %.0f kGE (cost model), %dx%d, threads %d, best of %d\n", cfg.name.c_str(),
+              int(cfg.clock_mhz), cfg.pipelines, CostModel::of(cfg).totalGe() / 1e3, a.width, a.height, a.threads,
+              a.repeat);
+  std::printf("%-14s %8s %10s %10s %7s %12s %9s %9s %12s %9s %10s %8s\n", "scene", "prims", "ref ms", "hw ms",
+              "hw/ref", "cycles", "host s", "trace s", "loop cyc/s", "slowdown", "frame ms", "fps");
   for (const std::string& path : scenes) {
     Scene scene = loadScene(path);
     scene.width = a.width;
@@ -56,7 +60,7 @@ void runBench(const BenchArgs& a) {
       hwMs = std::min(hwMs, wallMs(t0));
     }
     std::uint64_t cycles = 0;
-    double hostS = 0, frameMs = 0, loopS = 0;
+    double hostS = 0, frameMs = 0, loopS = 0, traceS = 0;
     if (a.cycle) {
       const std::clock_t c0 = std::clock();
       const HwRender r = renderHwCycle(scene, cfg, a.threads);
@@ -65,9 +69,10 @@ void runBench(const BenchArgs& a) {
       cycles = r.stats.cycles;
       frameMs = r.stats.frameSeconds() * 1e3;
       loopS = r.stats.loop_seconds;
+      traceS = r.stats.trace_seconds;
     }
-    std::printf("%-14s %8zu %10.1f %10.1f %7.2f %12llu %9.2f %12.3g %9.0f %10.3f %8.1f\n", scene.name.c_str(),
-                scene.primitives.size(), refMs, hwMs, hwMs / refMs, (unsigned long long)cycles, hostS,
+    std::printf("%-14s %8zu %10.1f %10.1f %7.2f %12llu %9.2f %9.3f %12.3g %9.0f %10.3f %8.1f\n", scene.name.c_str(),
+                scene.primitives.size(), refMs, hwMs, hwMs / refMs, (unsigned long long)cycles, hostS, traceS,
                 loopS > 0 ? double(cycles) / loopS : 0.0, frameMs > 0 ? hostS * 1e3 / frameMs : 0.0, frameMs,
                 frameMs > 0 ? 1e3 / frameMs : 0.0);
     std::fflush(stdout);
