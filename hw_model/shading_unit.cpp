@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "hw_model/sqrt_unit.h"
 #include "raster/shading.h"
@@ -49,21 +50,47 @@ namespace {
 // value after the leading-zero normaliser has at most normal_bits bits, so T =
 // std::int64_t holds all of it when normal_bits <= 23 (len² · 2^2G < 3 · 2^60); the i128
 // instantiation serves wider configurations. Both give the same bits.
+// floor(sqrt(x)) for 0 <= x < 2^63: the double estimate is off by at most one.
+inline std::int64_t isqrt63(std::int64_t x) {
+  std::int64_t q = std::int64_t(std::sqrt(double(x)));
+  if (q * q > x) --q;
+  else if ((q + 1) * (q + 1) <= x) ++q;
+  return q;
+}
+
+inline bool fits63(i128 v) { return v > -(i128(1) << 62) && v < (i128(1) << 62); }
+
 template <typename T>
 void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
-  int len = 0;
-  for (int k = 0; k < 3; ++k) len = std::max(len, bitLength(in[k]));
-  if (len == 0) {
-    out[0] = out[1] = out[2] = 0;
-    return;
-  }
   const int nb = cfg.normal_bits, uf = cfg.unit_frac_bits, G = 8;
-  const int shift = len - (nb - 1);  // leading-zero normaliser
   T n[3];
-  for (int k = 0; k < 3; ++k) n[k] = T(shift > 0 ? shiftRound(in[k], shift, cfg.rounding) : shl(in[k], -shift));
+  if (std::is_same_v<T, std::int64_t> && fits63(in[0]) && fits63(in[1]) && fits63(in[2])) {
+    // The same normaliser on 64-bit registers.
+    const std::int64_t a[3] = {std::int64_t(in[0]), std::int64_t(in[1]), std::int64_t(in[2])};
+    const std::uint64_t m = std::uint64_t(a[0] < 0 ? -a[0] : a[0]) | std::uint64_t(a[1] < 0 ? -a[1] : a[1]) |
+                            std::uint64_t(a[2] < 0 ? -a[2] : a[2]);
+    if (m == 0) {
+      out[0] = out[1] = out[2] = 0;
+      return;
+    }
+    const int shift = (64 - __builtin_clzll(m)) - (nb - 1);  // leading-zero normaliser
+    for (int k = 0; k < 3; ++k)
+      n[k] = T(shift > 0 ? shiftRoundT<std::int64_t>(a[k], shift, cfg.rounding) : a[k] * (std::int64_t(1) << -shift));
+  } else {
+    int len = 0;
+    for (int k = 0; k < 3; ++k) len = std::max(len, bitLength(in[k]));
+    if (len == 0) {
+      out[0] = out[1] = out[2] = 0;
+      return;
+    }
+    const int shift = len - (nb - 1);  // leading-zero normaliser
+    for (int k = 0; k < 3; ++k) n[k] = T(shift > 0 ? shiftRound(in[k], shift, cfg.rounding) : shl(in[k], -shift));
+  }
   const T len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   // Reciprocal square root: R = 2^(uf + G + nb - 1) / sqrt(len2 · 2^2G), then unit = n R >> (nb - 1).
-  const T root = T(SqrtUnit::compute((unsigned __int128)(len2 * (T(1) << (2 * G)))));
+  T root;
+  if constexpr (std::is_same_v<T, std::int64_t>) root = isqrt63(len2 * (T(1) << (2 * G)));
+  else root = T(SqrtUnit::compute((unsigned __int128)(len2 * (T(1) << (2 * G)))));
   if (root == 0) {
     out[0] = out[1] = out[2] = 0;
     return;
