@@ -70,7 +70,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   units.push_back(std::make_unique<TraversalUnit>(hs.setups, cfg, setupFifo, pixFifo));
   for (std::size_t p = 0; p < P; ++p)
     units.push_back(std::make_unique<PixelPipelineUnit>("pixel_pipeline_" + std::to_string(p), trace, cfg,
-                                                        pixFifo[p], zFifo[p], st.pixels));
+                                                        pixFifo[p], zFifo[p], st.pixels, &zb));
   units.push_back(std::make_unique<ZBufferUnit>(cfg, zb, zFifo, shadeFifo, st.pixels));
   for (std::size_t p = 0; p < P; ++p)
     units.push_back(std::make_unique<ShadingUnit>("shading_" + std::to_string(p), cfg, shadeFifo[p],

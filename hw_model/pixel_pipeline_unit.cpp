@@ -25,6 +25,7 @@ bool PixelPipelineUnit::tick(std::uint64_t now) {
     ++px_.tested;
     px_.clip_passes += std::uint64_t(o.clipPasses);
     if (o.hit) {
+      if (zb_) __builtin_prefetch(&zb_->px[std::size_t(t.y) * std::size_t(zb_->width) + std::size_t(t.x)]);
       ++px_.covered;
       px_.caps += o.cap >= 0;
     } else {

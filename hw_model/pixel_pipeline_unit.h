@@ -11,6 +11,7 @@
 #include "hw_model/delay_queue.h"
 #include "hw_model/fifo.h"
 #include "hw_model/hw_config.h"
+#include "hw_model/hw_scene_setup.h"
 #include "hw_model/pixel_trace.h"
 #include "hw_model/traversal_unit.h"
 #include "hw_model/unit.h"
@@ -26,9 +27,13 @@ struct ZRequest {
 
 class PixelPipelineUnit : public Unit {
  public:
+  // `zb` is only a host-side hint: the Z-buffer record of a pixel that will reach the Z
+  // unit is prefetched into the host's cache when the pixel enters the pipeline (no
+  // modeled effect).
   PixelPipelineUnit(const std::string& name, const PixelTrace& trace, const HwConfig& cfg, Fifo<PixelToken>& in,
-                    Fifo<ZRequest>& out, PixelCounters& px)
-      : Unit(name), trace_(trace), in_(in), out_(out), px_(px), latency_(std::uint64_t(cfg.pixelPipelineLatency())) {}
+                    Fifo<ZRequest>& out, PixelCounters& px, const ZBufferState* zb = nullptr)
+      : Unit(name), trace_(trace), in_(in), out_(out), px_(px), latency_(std::uint64_t(cfg.pixelPipelineLatency())),
+        zb_(zb) {}
   bool tick(std::uint64_t now) override;
   std::uint64_t nextEvent() const override;
   bool holdsWork() const override { return !inflight_.empty(); }
@@ -46,6 +51,7 @@ class PixelPipelineUnit : public Unit {
   std::uint64_t latency_;
   DelayQueue<InFlight> inflight_;
   std::uint64_t nextAccept_ = 0;
+  const ZBufferState* zb_;
 };
 
 }  // namespace qacc
