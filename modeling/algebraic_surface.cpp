@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "modeling/bernstein_roots.h"
+#include "modeling/marching_tetrahedra.h"
 
 namespace qacc {
 
@@ -72,6 +73,30 @@ std::vector<double> AlgebraicSurface::allRoots(const Eigen::Vector3d& p0, const 
   std::vector<double> r = allBernsteinRoots(powerToBernstein(f_.alongLine(p0 + t0 * d, (t1 - t0) * d)));
   for (double& t : r) t = t0 + t * (t1 - t0);
   return r;
+}
+
+ExactSurfaceMesh AlgebraicSurface::tessellate(std::size_t triangles) const {
+  ExactSurfaceMesh out;
+  TriangleSoup soup = marchingTetrahedraOfSize(f_, box_, triangles, &out.grid);
+  const FacetError e = facetError(f_, soup, box_);
+  out.max_error = e.max;
+  out.mean_error = e.mean;
+  out.normals.resize(soup.vertices.size(), Eigen::Vector3d::Zero());
+  // At a singular point (∇f = 0) the vertex takes the mean normal of its triangles.
+  std::vector<Eigen::Vector3d> faceSum(soup.vertices.size(), Eigen::Vector3d::Zero());
+  for (const auto& t : soup.triangles) {
+    const Eigen::Vector3d& a = soup.vertices[std::size_t(t[0])];
+    const Eigen::Vector3d n = (soup.vertices[std::size_t(t[1])] - a).cross(soup.vertices[std::size_t(t[2])] - a);
+    for (int v : t) faceSum[std::size_t(v)] += n;
+  }
+  for (std::size_t i = 0; i < soup.vertices.size(); ++i) {
+    const Eigen::Vector3d g = f_.gradient(soup.vertices[i]);
+    const Eigen::Vector3d& n = g.squaredNorm() > 0.0 && g.allFinite() ? g : faceSum[i];
+    out.normals[i] = n.squaredNorm() > 0.0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d(0, 0, 1);
+  }
+  out.positions = std::move(soup.vertices);
+  out.triangles = std::move(soup.triangles);
+  return out;
 }
 
 }  // namespace qacc

@@ -3,7 +3,8 @@
 // segment the polynomial is restricted to the part of the segment inside the box, expanded
 // in t, converted to the Bernstein basis and its first root isolated by Bernstein
 // subdivision (modeling/bernstein_roots.h: robust, no fixed-step marching; the tolerances
-// are stated there). The normal is ∇f at the hit.
+// are stated there). The normal is ∇f at the hit. Its triangles are a marching-tetrahedra
+// mesh of the box (marching_tetrahedra.h) with unit ∇f normals, measured by facetError.
 #pragma once
 #include <vector>
 
@@ -21,6 +22,7 @@ class AlgebraicSurface : public ExactSurface {
 
   bool intersect(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, ExactHit& hit) const override;
   Eigen::AlignedBox3d bounds() const override { return box_; }
+  ExactSurfaceMesh tessellate(std::size_t triangles) const override;
 
   // Every root of the segment (parameters in [0, 1], increasing) inside the box.
   std::vector<double> allRoots(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1) const;

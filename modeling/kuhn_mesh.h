@@ -31,6 +31,14 @@ struct TetMesh {
 // computed as min + (max - min) * i / n, so shared vertices are bit-identical.
 TetMesh kuhnMesh(const Eigen::AlignedBox3d& box, int nx, int ny, int nz);
 
+// Grid vertex (i, j, k) of the Kuhn mesh of `box` with n = (nx, ny, nz) cubes per axis,
+// bit-identical to kuhnMesh's vertex (for meshes walked cube by cube without storing them).
+Eigen::Vector3d kuhnGridPoint(const Eigen::AlignedBox3d& box, const Eigen::Vector3i& n, int i, int j, int k);
+// The 6 tetrahedra of the cube whose minimum grid corner is (i, j, k): grid coordinates of
+// their vertices in Kuhn path order, in kuhnMesh's order.
+using KuhnCubeTets = std::array<std::array<Eigen::Vector3i, 4>, 6>;
+KuhnCubeTets kuhnCubeTets(int i, int j, int k);
+
 // Bey's 1 → 8 split of the tetrahedron (x0, x1, x2, x3); midpoints are (xi + xj) / 2.
 std::array<std::array<Eigen::Vector3d, 4>, 8> refineBey(const std::array<Eigen::Vector3d, 4>& t);
 

@@ -1,7 +1,9 @@
 #include "modeling/marching_tetrahedra.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "modeling/algebraic_surface.h"
@@ -10,21 +12,33 @@
 namespace qacc {
 
 TriangleSoup marchingTetrahedra(const Polynomial3& f, const Eigen::AlignedBox3d& box, int level) {
-  const TetMesh m = kuhnMesh(box, level, level, level);
-  std::vector<double> val(m.vertices.size());
-  for (std::size_t i = 0; i < m.vertices.size(); ++i) val[i] = f.eval(m.vertices[i]);
+  if (level < 1) throw std::invalid_argument("marchingTetrahedra: at least one cube per axis");
+  if (box.isEmpty() || !(box.sizes().array() > 0.0).all()) throw std::invalid_argument("marchingTetrahedra: empty box");
+  // The Kuhn mesh of kuhn_mesh.h, walked cube by cube (only the grid values are stored).
+  const Eigen::Vector3i n(level, level, level);
+  const int N = level + 1;
+  auto index = [N](const Eigen::Vector3i& c) { return (c.z() * N + c.y()) * N + c.x(); };
+  std::vector<double> val(std::size_t(N) * std::size_t(N) * std::size_t(N));
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < N; ++k)
+    for (int j = 0; j < N; ++j)
+      for (int i = 0; i < N; ++i) val[std::size_t(index({i, j, k}))] = f.eval(kuhnGridPoint(box, n, i, j, k));
   // A vertex counts as inside when f <= 0.
-  auto in = [&](int v) { return val[std::size_t(v)] <= 0.0; };
+  auto in = [&](const Eigen::Vector3i& c) { return val[std::size_t(index(c))] <= 0.0; };
   TriangleSoup out;
   std::unordered_map<std::uint64_t, int> edgeVertex;
-  auto cut = [&](int a, int b) {
-    if (a > b) std::swap(a, b);
+  auto cut = [&](Eigen::Vector3i ca, Eigen::Vector3i cb) {
+    int a = index(ca), b = index(cb);
+    if (a > b) {
+      std::swap(a, b);
+      std::swap(ca, cb);
+    }
     const std::uint64_t key = (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
     auto it = edgeVertex.find(key);
     if (it != edgeVertex.end()) return it->second;
-    Eigen::Vector3d lo = m.vertices[std::size_t(a)], hi = m.vertices[std::size_t(b)];
+    Eigen::Vector3d lo = kuhnGridPoint(box, n, ca.x(), ca.y(), ca.z()), hi = kuhnGridPoint(box, n, cb.x(), cb.y(), cb.z());
     double flo = val[std::size_t(a)];
-    for (int k = 0; k < 60; ++k) {  // bisection keeps the bracket exactly
+    for (int s = 0; s < 60; ++s) {  // bisection keeps the bracket exactly
       const Eigen::Vector3d mid = 0.5 * (lo + hi);
       const double fm = f.eval(mid);
       if ((fm <= 0.0) == (flo <= 0.0)) {
@@ -43,33 +57,77 @@ TriangleSoup marchingTetrahedra(const Polynomial3& f, const Eigen::AlignedBox3d&
     const Eigen::Vector3d& pa = out.vertices[std::size_t(a)];
     const Eigen::Vector3d& pb = out.vertices[std::size_t(b)];
     const Eigen::Vector3d& pc = out.vertices[std::size_t(c)];
-    const Eigen::Vector3d n = (pb - pa).cross(pc - pa);
-    if (n.squaredNorm() == 0.0) return;
-    if (n.dot(f.gradient((pa + pb + pc) / 3.0)) < 0) std::swap(b, c);
+    const Eigen::Vector3d nrm = (pb - pa).cross(pc - pa);
+    if (nrm.squaredNorm() == 0.0) return;
+    if (nrm.dot(f.gradient((pa + pb + pc) / 3.0)) < 0) std::swap(b, c);
     out.triangles.push_back({a, b, c});
   };
-  for (const auto& t : m.tets) {
-    std::array<int, 4> inside{}, outside{};
-    int ni = 0, no = 0;
-    for (int v : t) {
-      if (in(v))
-        inside[std::size_t(ni++)] = v;
-      else
-        outside[std::size_t(no++)] = v;
+  for (int k = 0; k < level; ++k)
+    for (int j = 0; j < level; ++j)
+      for (int i = 0; i < level; ++i) {
+        int nin = 0;  // a cube with all 8 corners on one side has no crossing tetrahedron
+        for (int c = 0; c < 8; ++c) nin += in({i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)});
+        if (nin == 0 || nin == 8) continue;
+        for (const auto& t : kuhnCubeTets(i, j, k)) {
+          std::array<Eigen::Vector3i, 4> inside, outside;
+          int ni = 0, no = 0;
+          for (const auto& v : t) {
+            if (in(v))
+              inside[std::size_t(ni++)] = v;
+            else
+              outside[std::size_t(no++)] = v;
+          }
+          if (ni == 0 || no == 0) continue;
+          if (ni == 1 || no == 1) {
+            const Eigen::Vector3i apex = ni == 1 ? inside[0] : outside[0];
+            const auto& others = ni == 1 ? outside : inside;
+            emit(cut(apex, others[0]), cut(apex, others[1]), cut(apex, others[2]));
+          } else {  // 2 and 2: a quadrilateral
+            const int p = cut(inside[0], outside[0]), q = cut(inside[0], outside[1]), r = cut(inside[1], outside[1]),
+                      s = cut(inside[1], outside[0]);
+            emit(p, q, r);
+            emit(p, r, s);
+          }
+        }
+      }
+  return out;
+}
+
+TriangleSoup marchingTetrahedraOfSize(const Polynomial3& f, const Eigen::AlignedBox3d& box, std::size_t triangles,
+                                      int* levelOut) {
+  const double target = double(std::max<std::size_t>(triangles, 1));
+  // Closeness of a mesh's count to the target (log ratio; an empty mesh is the worst).
+  auto miss = [&](const TriangleSoup& m) {
+    return m.triangles.empty() ? HUGE_VAL : std::abs(std::log(double(m.triangles.size()) / target));
+  };
+  const int pilot = 16;
+  int level = pilot;
+  TriangleSoup mesh = marchingTetrahedra(f, box, level);
+  auto consider = [&](int n) {
+    TriangleSoup m = marchingTetrahedra(f, box, n);
+    if (miss(m) < miss(mesh)) {
+      mesh = std::move(m);
+      level = n;
     }
-    if (ni == 0 || no == 0) continue;
-    if (ni == 1 || no == 1) {
-      const int apex = ni == 1 ? inside[0] : outside[0];
-      const auto& others = ni == 1 ? outside : inside;
-      emit(cut(apex, others[0]), cut(apex, others[1]), cut(apex, others[2]));
-    } else {  // 2 and 2: a quadrilateral
-      const int p = cut(inside[0], outside[0]), q = cut(inside[0], outside[1]), r = cut(inside[1], outside[1]),
-                s = cut(inside[1], outside[0]);
-      emit(p, q, r);
-      emit(p, r, s);
+  };
+  const double predicted = mesh.triangles.empty() ? 0.0 : pilot * std::sqrt(target / double(mesh.triangles.size()));
+  if (mesh.triangles.empty() || predicted < pilot) {
+    // Grids up to the pilot's are cheap, and coarse grids that do not resolve the surface
+    // stray from the square law: try them all (and 64 for a surface the pilot misses).
+    for (int n = 1; n < pilot; ++n) consider(n);
+    if (mesh.triangles.empty()) consider(64);
+  } else {
+    // The count grows as the square of the grid once the grid resolves the surface; one
+    // more correction when the prediction is more than 20 % off.
+    int n = int(std::min(std::lround(predicted), long(kMaxMarchingLevel)));
+    for (int step = 0; step < 2 && n != level && miss(mesh) > std::log(1.2); ++step) {
+      consider(n);
+      n = int(std::clamp(std::lround(level * std::sqrt(target / double(mesh.triangles.size()))), 1L,
+                         long(kMaxMarchingLevel)));
     }
   }
-  return out;
+  if (levelOut) *levelOut = level;
+  return mesh;
 }
 
 namespace {

@@ -19,7 +19,20 @@ struct TriangleSoup {
   std::vector<std::array<int, 3>> triangles;
 };
 
+// `level` cubes per axis (>= 1). The mesh is walked cube by cube: memory is the grid's
+// values and the output, so fine levels (256: 17 M grid points) stay affordable.
 TriangleSoup marchingTetrahedra(const Polynomial3& f, const Eigen::AlignedBox3d& box, int level);
+
+// The finest grid marchingTetrahedraOfSize uses (cubes per axis).
+constexpr int kMaxMarchingLevel = 256;
+// A mesh of about `triangles` triangles (a tessellation level given as a triangle budget):
+// the count grows as the square of the grid, so the grid is predicted from a 16-cube pilot
+// mesh, clamped to kMaxMarchingLevel and corrected once more when the count is more than
+// 20 % off; budgets below the pilot's count try every coarser grid (which may not resolve
+// the surface and stray from the square law), and 64 is tried when the pilot misses the
+// surface. The closest count wins; the level used is returned in *level when given.
+TriangleSoup marchingTetrahedraOfSize(const Polynomial3& f, const Eigen::AlignedBox3d& box, std::size_t triangles,
+                                      int* level = nullptr);
 
 // Sampled two-sided distance between the triangles and f = 0 inside the box:
 //  - triangles → surface: Newton projection along ∇f of each triangle's centroid and edge

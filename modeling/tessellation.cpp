@@ -1000,13 +1000,61 @@ PrimitiveTessellation tessellatePrimitive(const Primitive& prim, const Tessellat
   return t;
 }
 
+namespace {
+
+// The triangles of an object's exact surface, at the budget of `pieces` quadric pieces.
+ExactSurfaceMesh tessellateExact(const ExactSurface& surface, std::size_t pieces, const TessellationOptions& options) {
+  pieces = std::max<std::size_t>(pieces, 1);
+  if (options.chord_error <= 0) return surface.tessellate(std::size_t(std::max(2, options.triangles)) * pieces);
+  std::size_t budget = 64 * pieces;
+  ExactSurfaceMesh m = surface.tessellate(budget);
+  while (m.max_error > options.chord_error && 4 * budget <= std::size_t(options.max_triangles) * pieces) {
+    budget *= 4;
+    ExactSurfaceMesh finer = surface.tessellate(budget);
+    const bool same = finer.grid == m.grid;  // the finest grid is reached
+    m = std::move(finer);
+    if (same) break;
+  }
+  return m;
+}
+
+}  // namespace
+
 TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& options, TessellationReport* report) {
   TriangleMesh3 all;
   TessellationReport rep;
   const double aspect = double(scene.width) / double(scene.height);
   double meanSum = 0;
+  std::size_t measured = 0;
+  std::vector<bool> exactDone(scene.exact_surfaces.size(), false);
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& p = scene.primitives[i];
+    const SceneObject* object =
+        p.object >= 0 && std::size_t(p.object) < scene.objects.size() ? &scene.objects[std::size_t(p.object)] : nullptr;
+    const int e = object ? object->exact_surface : -1;
+    if (e >= 0 && std::size_t(e) < scene.exact_surfaces.size()) {
+      // The object's true surface replaces its pieces, drawn once at its first piece.
+      if (exactDone[std::size_t(e)]) continue;
+      exactDone[std::size_t(e)] = true;
+      ExactSurfaceMesh em = tessellateExact(*scene.exact_surfaces[std::size_t(e)], object->count, options);
+      TriangleMesh3 t;
+      t.positions = std::move(em.positions);
+      t.normals = std::move(em.normals);
+      t.triangles = std::move(em.triangles);
+      const std::size_t n = t.size();
+      t.object.assign(n, p.object);
+      t.material.assign(n, p.material);
+      t.primitive.assign(n, int(i));
+      all.append(t);
+      ++rep.exact_surfaces;
+      rep.exact_triangles += n;
+      rep.triangles += n;
+      rep.exact_grid = std::max(rep.exact_grid, em.grid);
+      rep.max_chord_error = std::max(rep.max_chord_error, em.max_error);
+      meanSum += em.mean_error;
+      ++measured;
+      continue;
+    }
     PrimitiveTessellation t = tessellatePrimitive(p, options, &scene.camera, aspect);
     const std::size_t n = t.mesh.size();
     t.mesh.object.assign(n, p.object);
@@ -1024,8 +1072,9 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
     }
     rep.max_chord_error = std::max(rep.max_chord_error, t.max_chord_error);
     meanSum += t.mean_chord_error;
+    ++measured;
   }
-  rep.mean_chord_error = rep.primitives ? meanSum / double(rep.primitives) : 0.0;
+  rep.mean_chord_error = measured ? meanSum / double(measured) : 0.0;
   if (report) *report = rep;
   return all;
 }

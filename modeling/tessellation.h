@@ -23,6 +23,13 @@
 // Level: `triangles` is the target number of surface triangles per primitive (caps come
 // on top); `chord_error` > 0 instead refines each grid until the measured chord error
 // (world units) is at most that bound.
+//
+// Objects with an exact surface (exact_surface.h: algebraic surfaces, which the reference
+// ray-casts) are tessellated from that surface, not from their quadric pieces: the
+// surface's own triangles (marching tetrahedra of the true surface), about `triangles`
+// per quadric piece of the object so that a level means the same budget as for the pieces,
+// or with `chord_error` the budget quadrupled from 64 per piece until the sampled distance
+// to the true surface is at most the bound (up to the finest marching grid).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -72,8 +79,11 @@ struct TessellationReport {
   std::size_t triangles = 0;
   std::size_t cap_triangles = 0;
   std::size_t parametric = 0, planar = 0, marching = 0, empty = 0;
-  double max_chord_error = 0;   // over all primitives, world units
-  double mean_chord_error = 0;  // mean over primitives of their mean
+  // Objects drawn by their exact surface's triangles (their pieces are not counted above).
+  std::size_t exact_surfaces = 0, exact_triangles = 0;
+  int exact_grid = 0;           // finest marching-tetrahedra grid used for them (cubes per axis)
+  double max_chord_error = 0;   // over all primitives and exact surfaces, world units
+  double mean_chord_error = 0;  // mean over primitives and exact surfaces of their mean
 };
 
 // `frustum` bounds unbounded pieces (pass the scene camera); may be null for bounded ones.

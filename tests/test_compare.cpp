@@ -42,6 +42,20 @@ namespace {
   return s;
 }
 
+// Runs `qacc compare SCENE ARGS --out <build>/DIR`; returns the exit status and the output.
+int runCompareCommand(const std::string& scene, const std::string& args, const std::string& dir, std::string& text) {
+  namespace fs = std::filesystem;
+  const fs::path out = fs::path(QACC_BINARY_DIR) / dir;
+  fs::remove_all(out);
+  const std::string log = out.string() + ".log";
+  const std::string cmd = std::string(QACC_EXE) + " compare " + QACC_SOURCE_DIR + "/scenes/" + scene + " " + args +
+                          " --out " + out.string() + " > " + log + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  std::ifstream lf(log);
+  text.assign(std::istreambuf_iterator<char>(lf), std::istreambuf_iterator<char>());
+  return status;
+}
+
 }  // namespace
 
 #ifdef QACC_HAVE_OSMESA
@@ -101,17 +115,12 @@ TEST(CompareCommand, GalleryWritesFilesAndCrossoverTable) {
   if (!facetRendererAvailable()) GTEST_SKIP() << facetRendererMissingMessage();
   namespace fs = std::filesystem;
   const fs::path out = fs::path(QACC_BINARY_DIR) / "test_compare_out";
-  fs::remove_all(out);
-  const std::string log = (out.string() + ".log");
-  const std::string cmd = std::string(QACC_EXE) + " compare " + QACC_SOURCE_DIR +
-                          "/scenes/gallery.json --levels 8,64 --width 200 --height 150 --threads 2 --out " +
-                          out.string() + " > " + log + " 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::string text;
+  ASSERT_EQ(runCompareCommand("gallery.json", "--levels 8,64 --width 200 --height 150 --threads 2", "test_compare_out", text), 0)
+      << text;
   for (const char* f : {"compare.json", "compare.csv", "side_by_side.png", "error_vs_triangles.svg",
                         "error_vs_cycles.svg"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
-  std::ifstream lf(log);
-  const std::string text((std::istreambuf_iterator<char>(lf)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("equal error"), std::string::npos);
   EXPECT_NE(text.find("equal cost"), std::string::npos);
   std::ifstream jf(out / "compare.json");
@@ -147,4 +156,33 @@ TEST(CompareCommand, FacetsEngineRefusesClearlyWithoutOsmesa) {
   std::ifstream lf(log);
   const std::string text((std::istreambuf_iterator<char>(lf)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("OSMesa"), std::string::npos) << text;
+}
+
+TEST(CompareCommand, AlgebraicSceneFacetsAreTrianglesOfTheTrueSurface) {
+  // The torus: reference = the true surface, hw = its quadric pieces, facets = marching
+  // tetrahedra of the true surface, whose distance to it is reported and shrinks.
+  if (!facetRendererAvailable()) GTEST_SKIP() << facetRendererMissingMessage();
+  namespace fs = std::filesystem;
+  const fs::path out = fs::path(QACC_BINARY_DIR) / "test_compare_torus_out";
+  std::string text;
+  ASSERT_EQ(runCompareCommand("torus.json", "--levels 2,16 --width 160 --height 120 --threads 2 --no-facet-cycles",
+                              "test_compare_torus_out", text),
+            0)
+      << text;
+  EXPECT_NE(text.find("marching tetrahedra of the true surface"), std::string::npos) << text;
+  std::ifstream jf(out / "compare.json");
+  const nlohmann::json j = nlohmann::json::parse(jf);
+  ASSERT_EQ(j["rows"].size(), 3u);
+  const auto& coarse = j["rows"][1];
+  const auto& fine = j["rows"][2];
+  const double pieces = j["quadric_primitives"].get<double>();
+  for (const auto* r : {&coarse, &fine}) {
+    EXPECT_GT((*r)["exact_surface_grid"].get<int>(), 0);
+    const double budget = (*r)["level"].get<double>() * pieces;  // triangles per quadric piece
+    EXPECT_GT((*r)["primitives"].get<double>(), 0.6 * budget);
+    EXPECT_LT((*r)["primitives"].get<double>(), 1.6 * budget);
+  }
+  EXPECT_LT(fine["chord_error"].get<double>(), coarse["chord_error"].get<double>());
+  EXPECT_LT(fine["coverage_px"].get<double>(), coarse["coverage_px"].get<double>());
+  EXPECT_GT(fine["psnr_db"].get<double>(), coarse["psnr_db"].get<double>());
 }

@@ -40,3 +40,19 @@ TEST(MarchingTetrahedra, SphereMeshIsClosedAndConverges) {
   // A mesh that misses the surface has infinite error: an empty mesh.
   EXPECT_FALSE(std::isfinite(facetError(f, TriangleSoup{}, box).max));
 }
+
+TEST(MarchingTetrahedra, MeshOfSizeHitsTheTriangleBudget) {
+  const Polynomial3 f = Polynomial3::parse("x^4 + y^4 + z^4 - 1");
+  const Eigen::AlignedBox3d box(Vector3d(-1.2, -1.2, -1.2), Vector3d(1.2, 1.2, 1.2));
+  int previous = 0;
+  for (std::size_t budget : {300u, 3000u, 20000u, 80000u}) {
+    int level = 0;
+    const TriangleSoup m = marchingTetrahedraOfSize(f, box, budget, &level);
+    EXPECT_GT(level, previous);
+    // The same mesh as the plain call at that level.
+    EXPECT_EQ(m.triangles.size(), marchingTetrahedra(f, box, level).triangles.size());
+    EXPECT_GT(double(m.triangles.size()), 0.75 * double(budget)) << budget;
+    EXPECT_LT(double(m.triangles.size()), 1.33 * double(budget)) << budget;
+    previous = level;
+  }
+}

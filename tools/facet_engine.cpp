@@ -43,6 +43,13 @@ bool runFacetEngine(const std::string& engine, const Scene& scene, const EngineO
                 level, t.triangles, t.cap_triangles, t.primitives, t.parametric, t.planar, t.marching, t.empty,
                 t.max_chord_error, t.mean_chord_error);
   out.notes.push_back(buf);
+  if (t.exact_surfaces) {
+    std::snprintf(buf, sizeof buf,
+                  "facets: %zu of the triangles tessellate %zu exact surface(s) instead of their quadric pieces "
+                  "(marching tetrahedra of the true surface, grid up to %d cubes per axis)",
+                  t.exact_triangles, t.exact_surfaces, t.exact_grid);
+    out.notes.push_back(buf);
+  }
   std::snprintf(buf, sizeof buf,
                 "facets: tessellate %.2f ms, GL setup %.2f ms, draw+finish %.2f ms, read back %.2f ms, id pass %.2f ms",
                 run.tessellate_ms, run.render.setup_ms, run.render.draw_ms, run.render.readback_ms, run.render.id_pass_ms);

@@ -1,5 +1,6 @@
 // The facet engine of `qacc render --engine facets --level N [--shading gouraud|pixel]`:
-// tessellate every primitive (modeling/tessellation.h), draw the triangles with OSMesa
+// tessellate every primitive (modeling/tessellation.h; objects with an exact surface are
+// tessellated from that surface, not from their pieces), draw the triangles with OSMesa
 // (raster/osmesa_renderer.h). Without OSMesa in the build it refuses with a clear message.
 #pragma once
 #include <string>
