@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hw_model/rsqrt_unit.h"
+
 namespace qacc {
 
 double CostModel::shifter(double bits) { return 2.0 * bits * std::ceil(std::log2(std::max(2.0, bits))); }
@@ -76,18 +78,27 @@ CostModel CostModel::of(const HwConfig& c) {
   // light per cycle), dot products, colour, specular table and sRGB ROM.
   const int nb = c.normal_bits, uf = c.unit_frac_bits, cf = c.color_frac_bits, G = 8;
   const double field = 3 * (linInterp + multiplier(nb + 8, c.depth_bits));
-  const double normaliser = 3 * shifter(acc) + 3 * multiplier(nb, nb) + 2 * adder(2 * nb) +
-                            digitRecurrence(nb + G, nb + G + 2, c.sqrt_radix) +
-                            digitRecurrence(uf + 2, uf + G + nb, c.divider_radix) + 3 * multiplier(nb, uf + 2);
+  const int Pr = RsqrtUnit::kPrecision;
+  const double rsqrt =
+      c.shading_normalizer == Normalizer::Newton
+          ? shifter(2 * nb) + rom(RsqrtUnit::romBits()) + multiplier(Pr + 1, Pr + 1) +
+                multiplier(2 * Pr + 2, 2 * Pr + 2) + adder(4 * Pr + 4) + multiplier(Pr + 1, 2 * Pr + 2) +
+                3 * multiplier(nb, Pr + 1)
+          : digitRecurrence(nb + G, nb + G + 2, c.sqrt_radix) + digitRecurrence(uf + 2, uf + G + nb, c.divider_radix) +
+                3 * multiplier(nb, uf + 2);
+  const double normaliser = 3 * shifter(acc) + 3 * multiplier(nb, nb) + 2 * adder(2 * nb) + rsqrt;
   const double dot3 = 3 * multiplier(uf + 2, uf + 2) + 2 * adder(2 * uf + 4);
   const double colour = 3 * (multiplier(cf + 2, uf + 2) + multiplier(cf + 8, cf + 2) + 2 * adder(cf + 8));
   const double specRom = double((1 << uf) + 1) * (cf + 4), srgbRom = double((1 << cf) + 1) * 8;
+  const double rsqrtRom = c.shading_normalizer == Normalizer::Newton ? 3.0 * RsqrtUnit::romBits() : 0.0;
   m.units.push_back({"shading", P,
                      2 * field + 3 * normaliser + 3 * dot3 + colour + rom(specRom + srgbRom) +
                          reg(double(c.shading_latency) * (zReqBits + 3 * (uf + 2))),
-                     specRom + srgbRom,
-                     "normal and view fields, 3 normalisers (rsqrt = sqrt + divider), 3 dot products, colour "
-                     "multipliers, specular table and sRGB ROM, pipeline registers"});
+                     specRom + srgbRom + rsqrtRom,
+                     std::string("normal and view fields, 3 normalisers (rsqrt: ") +
+                         (c.shading_normalizer == Normalizer::Newton ? "seed ROM + one Newton step"
+                                                                     : "digit-recurrence sqrt + divider") +
+                         "), 3 dot products, colour multipliers, specular table and sRGB ROM, pipeline registers"});
   m.zbufferBitsPerPixel = c.zbuffer_bits;
   return m;
 }

@@ -87,6 +87,16 @@ const std::map<std::string, Field>& fields() {
                           [](const HwConfig& c) {
                             return nlohmann::json(c.depth_variant == DepthVariant::Stable ? "stable" : "reciprocal");
                           }};
+    m["shading_normalizer"] = {[](HwConfig& c, const nlohmann::json& j, const std::string& w) {
+                                 const std::string s = j.is_string() ? j.get<std::string>() : "";
+                                 if (s == "newton") c.shading_normalizer = Normalizer::Newton;
+                                 else if (s == "recurrence") c.shading_normalizer = Normalizer::Recurrence;
+                                 else throw std::invalid_argument(w + ": expected \"newton\" or \"recurrence\"");
+                               },
+                               [](const HwConfig& c) {
+                                 return nlohmann::json(c.shading_normalizer == Normalizer::Newton ? "newton"
+                                                                                                  : "recurrence");
+                               }};
     m["bus_width_bits"] = intField(&HwConfig::bus_width_bits, 8, 1024);
     m["bus_cycles_per_word"] = intField(&HwConfig::bus_cycles_per_word, 1, 64);
     m["descriptor_word_bits"] = intField(&HwConfig::descriptor_word_bits, 8, 64);

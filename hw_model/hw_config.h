@@ -9,6 +9,9 @@
 namespace qacc {
 
 enum class DepthVariant { Stable, Reciprocal };
+// How the shading unit normalises vectors: seed ROM + one Newton step (rsqrt_unit.h), or
+// a digit-recurrence square root followed by a divider.
+enum class Normalizer { Newton, Recurrence };
 
 struct HwConfig {
   std::string name = "default";
@@ -46,6 +49,7 @@ struct HwConfig {
   DepthVariant depth_variant = DepthVariant::Stable;
   int shading_cycles_per_pixel = 1;  // shading initiation interval
   int shading_latency = 12;
+  Normalizer shading_normalizer = Normalizer::Newton;
   // Z-buffer memory.
   int zbuffer_banks = 4;
   int zbuffer_read_latency = 2;  // cycles from request to data

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "hw_model/rsqrt_unit.h"
 #include "hw_model/sqrt_unit.h"
 #include "raster/shading.h"
 
@@ -87,7 +88,14 @@ void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
     for (int k = 0; k < 3; ++k) n[k] = T(shift > 0 ? shiftRound(in[k], shift, cfg.rounding) : shl(in[k], -shift));
   }
   const T len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-  // Reciprocal square root: R = 2^(uf + G + nb - 1) / sqrt(len2 · 2^2G), then unit = n R >> (nb - 1).
+  if (cfg.shading_normalizer == Normalizer::Newton) {
+    // unit = n / sqrt(len2) in 1.uf, with 1/sqrt(len2) = y · 2^-(2P+1+k) from the rsqrt unit.
+    const RsqrtUnit::Result r = RsqrtUnit::compute((unsigned __int128)len2);
+    const int sh = r.k + 2 * RsqrtUnit::kPrecision + 1 - uf;
+    for (int k = 0; k < 3; ++k) out[k] = shiftRoundT<T>(n[k] * T(r.y), sh, cfg.rounding);
+    return;
+  }
+  // Reciprocal square root by recurrence: R = 2^(uf + G + nb - 1) / sqrt(len2 · 2^2G), then unit = n R >> (nb - 1).
   T root;
   if constexpr (std::is_same_v<T, std::int64_t>) root = isqrt63(len2 * (T(1) << (2 * G)));
   else root = T(SqrtUnit::compute((unsigned __int128)(len2 * (T(1) << (2 * G)))));

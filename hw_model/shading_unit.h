@@ -3,7 +3,9 @@
 //  - the normal N, the view vector V and point-light vectors L are affine fields in
 //    (u, v, z) (setup: PrimitiveSetup::normal/view/pointLights; a cap uses its plane's
 //    normal), evaluated exactly, then normalised: a leading-zero shift to normal_bits,
-//    then a reciprocal square root and three multiplies → unit vectors in 1.unit_frac;
+//    then a reciprocal square root (seed ROM + Newton step, rsqrt_unit.h; or, with
+//    shading_normalizer = "recurrence", the digit-recurrence square root and a divider)
+//    and three multiplies → unit vectors in 1.unit_frac;
 //  - dot products in 1.unit_frac; the specular power comes from a per-material table
 //    (ROM) indexed by N·H; colours in 0.color_frac; the sRGB transfer is a table indexed
 //    by the linear colour (color_frac bits).

@@ -9,6 +9,7 @@
 #include "hw_model/linear_interpolator.h"
 #include "hw_model/quadratic_interpolator.h"
 #include "hw_model/hw_scene_setup.h"
+#include "hw_model/rsqrt_unit.h"
 #include "hw_model/shading_unit.h"
 #include "hw_model/sqrt_unit.h"
 #include "modeling/scene_loader.h"
@@ -178,4 +179,27 @@ TEST(ShadingUnit, SixtyFourBitRegistersGiveTheSameBitsAsOneHundredTwentyEight) {
     }
     EXPECT_GT(compared, 1000) << n;
   }
+}
+
+// The shading normaliser's reciprocal square root (seed ROM + one Newton step) against
+// the exact value, exhaustively over a range of small inputs and on random large ones.
+TEST(RsqrtUnit, NewtonStepFromTheSeedRomIsAccurateTo18Bits) {
+  const int P = RsqrtUnit::kPrecision;
+  auto relErr = [&](unsigned __int128 L) {
+    const RsqrtUnit::Result r = RsqrtUnit::compute(L);
+    const double exact = 1.0 / std::sqrt(double(L));
+    const double got = std::ldexp(double(r.y), -(2 * P + 1 + r.k));
+    return std::fabs(got - exact) / exact;
+  };
+  double worst = 0;
+  for (std::uint64_t L = 1; L < (1u << 20); ++L) worst = std::max(worst, relErr(L));
+  std::mt19937_64 rng(11);
+  for (int i = 0; i < 200000; ++i) {
+    const int bits = 20 + int(rng() % 100);
+    const unsigned __int128 L = (((unsigned __int128)rng() << 64) | rng()) >> (128 - bits);
+    if (L > 0) worst = std::max(worst, relErr(L));
+  }
+  EXPECT_LT(worst, std::ldexp(1.0, -18));
+  EXPECT_GT(worst, 0.0);  // an approximation, not an exact unit
+  EXPECT_EQ(RsqrtUnit::compute(0).y, 0);
 }
