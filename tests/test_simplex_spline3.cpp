@@ -1,8 +1,13 @@
-// Trivariate simplex B-splines (3-simplex volumes, issue 6): partition of unity, cells that
-// reproduce the spline, G0 across cell faces, culling that keeps every cell F can vanish in.
+// Trivariate simplex B-splines (3-simplex volumes, issue 6): partition of unity, exact
+// quadratics, cells that reproduce the spline, G0 across cell faces (and G1 with generic
+// knots), culling that keeps every cell F can vanish in (every zero of F found along random
+// segments lies in an emitted cell), deterministic output for any thread count.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "modeling/kuhn_mesh.h"
@@ -12,6 +17,39 @@ using namespace qacc;
 using Eigen::Vector3d;
 
 namespace {
+
+// Largest value and gradient gaps across the cells' faces: for each face, its corners'
+// centroid m and the cell just across (found at m + 1e-6 n).
+struct FaceGaps {
+  double value = 0, gradient = 0;
+  int faces = 0;
+};
+FaceGaps faceGaps(const std::vector<SimplexSpline3::Cell>& cells) {
+  FaceGaps g;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    for (const auto& h : cells[i].faces) {
+      Vector3d m = Vector3d::Zero();
+      int on = 0;
+      for (const auto& v : cells[i].corners)
+        if (std::fabs(h.eval(v)) <= 1e-9 * h.p.head<3>().norm()) {
+          m += v;
+          ++on;
+        }
+      m /= on;
+      const Vector3d out = m + 1e-6 * h.p.head<3>().normalized();
+      for (std::size_t j = 0; j < cells.size(); ++j) {
+        if (j == i) continue;
+        bool inside = true;
+        for (const auto& f : cells[j].faces) inside = inside && f.eval(out) < 0;
+        if (!inside) continue;
+        ++g.faces;
+        g.value = std::max(g.value, std::fabs(cells[i].quadric.eval(m) - cells[j].quadric.eval(m)));
+        g.gradient = std::max(g.gradient, (cells[i].quadric.gradient(m) - cells[j].quadric.gradient(m)).norm());
+        break;
+      }
+    }
+  return g;
+}
 
 SimplexSpline3 makeSpline(bool g1) {
   const TetMesh m = kuhnMesh(Eigen::AlignedBox3d(Vector3d(-1.5, -1.5, -1.5), Vector3d(1.5, 1.5, 1.5)), 3, 3, 3);
@@ -65,38 +103,152 @@ TEST(SimplexSpline3, CellsReproduceTheSplineAndJoinG0) {
           sum += a;
         }
         p /= sum;
-        worst = std::max(worst, std::fabs(c.poly.eval(p) - s.eval(p)));
+        worst = std::max(worst, std::fabs(c.quadric.eval(p) - s.eval(p)));
         // A cell culled as empty has F of one strict sign at its points.
         if (!c.crossed) {
-          EXPECT_GT(c.poly.eval(p) * c.poly.eval(c.corners[0]), 0.0);
+          EXPECT_GT(c.quadric.eval(p) * c.quadric.eval(c.corners[0]), 0.0);
         }
       }
       crossed += c.crossed;
     }
     EXPECT_LT(worst, 1e-9) << "g1 " << g1;
     EXPECT_GT(crossed, 0);
-    // G0: on each cell's facets, the polynomial of the cell just across agrees.
-    double gap = 0;
-    for (std::size_t i = 0; i < cells.size(); ++i)
-      for (const auto& h : cells[i].faces) {
-        Vector3d m = Vector3d::Zero();
-        int on = 0;
-        for (const auto& v : cells[i].corners)
-          if (std::fabs(h.eval(v)) <= 1e-9 * h.p.head<3>().norm()) {
-            m += v;
-            ++on;
+    // G0 on each cell's facets; generic knots also join with equal gradients (C1), knots on
+    // the vertices do not (a crease along the shared tetrahedron face).
+    const FaceGaps gaps = faceGaps(cells);
+    EXPECT_GE(gaps.faces, int(cells.size()));
+    EXPECT_LT(gaps.value, 1e-9) << "g1 " << g1;
+    if (g1)
+      EXPECT_LT(gaps.gradient, 1e-8);
+    else
+      EXPECT_GT(gaps.gradient, 1e-2);
+  }
+}
+
+TEST(SimplexSpline3, ReproducesQuadraticsExactly) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  const Polynomial3 q = Polynomial3::parse("0.7 x^2 - 1.3 x y + 0.4 y^2 + 0.5 y z - 0.8 z^2 + 0.2 x - 0.9 z + 0.1");
+  for (bool g1 : {false, true}) {
+    SimplexSpline3 s = makeSpline(g1);
+    s.setCoefficients(s.blossomCoefficients(q));
+    for (int k = 0; k < 40; ++k) {
+      const Vector3d p(u(rng), u(rng), u(rng));
+      EXPECT_NEAR(s.eval(p), q.eval(p), 1e-10);
+    }
+  }
+  // Every cell's quadric is q itself (one Kuhn cube, generic knots, inside the knot reach).
+  const TetMesh mesh = kuhnMesh(Eigen::AlignedBox3d(Vector3d(-0.5, -0.5, -0.5), Vector3d(0.5, 0.5, 0.5)), 1, 1, 1);
+  SimplexSpline3 s(2, mesh.vertices, mesh.tets, knotClouds3(mesh.vertices, mesh.tets, 2, true, 0.15));
+  s.setCoefficients(s.blossomCoefficients(q));
+  const double d = 0.5 - s.knotReach();  // where Σ N = 1
+  s.setDomain(Eigen::AlignedBox3d(Vector3d(-d, -d, -d), Vector3d(d, d, d)));
+  const auto cells = s.cells();
+  ASSERT_GT(cells.size(), 10u);
+  for (const auto& c : cells)
+    for (int k = 0; k < 5; ++k) {
+      const Vector3d p(u(rng), u(rng), u(rng));
+      EXPECT_NEAR(c.quadric.eval(p), q.eval(p), 1e-9);
+    }
+}
+
+// A closed surface in a 2 x 2 x 2 Kuhn grid with generic knots (and with knots on the
+// vertices), shown inside the domain where the basis is a partition of unity.
+SimplexSpline3 blob(bool g1) {
+  const TetMesh m = kuhnMesh(Eigen::AlignedBox3d(Vector3d(-1, -1, -1), Vector3d(1, 1, 1)), 2, 2, 2);
+  SimplexSpline3 s(2, m.vertices, m.tets, knotClouds3(m.vertices, m.tets, 2, g1, 0.2));
+  const double d = 1 - s.knotReach();
+  s.setDomain(Eigen::AlignedBox3d(Vector3d(-d, -d, -d), Vector3d(d, d, d)));
+  s.setCoefficients(s.grevilleCoefficients(Polynomial3::parse("x^2 + y^2 + z^2 + 0.5 x y z - 0.36")));
+  return s;
+}
+
+TEST(SimplexSpline3, CullingKeepsEveryZeroOfTheSpline) {
+  std::mt19937 rng(4);
+  for (bool g1 : {false, true}) {
+    const SimplexSpline3 s = blob(g1);
+    SimplexSpline3::CellStats all, kept;
+    const auto full = s.cells(&all);
+    const auto cells = s.crossedCells(&kept);
+    EXPECT_EQ(all.cells, full.size());
+    EXPECT_EQ(kept.crossed, cells.size());
+    EXPECT_LT(cells.size(), full.size());
+    if (g1) {
+      EXPECT_LT(cells.size(), full.size() / 4);
+      EXPECT_GT(kept.regions_culled, 0u);
+    }
+    // The emitted cells are cells of the full decomposition that it marks crossed too (the
+    // region culling only skips work), and the others have F of one strict sign.
+    std::map<std::vector<double>, const SimplexSpline3::Cell*> byCorners;
+    auto key = [](const SimplexSpline3::Cell& c) {
+      std::vector<double> k;
+      for (const auto& v : c.corners) k.insert(k.end(), v.data(), v.data() + 3);
+      return k;
+    };
+    for (const auto& c : full) byCorners[key(c)] = &c;
+    for (const auto& c : cells) {
+      const auto it = byCorners.find(key(c));
+      ASSERT_NE(it, byCorners.end());
+      EXPECT_TRUE(it->second->crossed);
+      EXPECT_EQ((it->second->quadric.Q - c.quadric.Q).cwiseAbs().maxCoeff(), 0.0);
+    }
+    // Zeros of F along random segments from near the centre (inside) to anywhere in the
+    // domain (sign changes on 200 steps, then bisection) lie in an emitted cell, whose
+    // quadric vanishes there.
+    const double d = s.domain().max().x();
+    std::uniform_real_distribution<double> u(-d, d), c(-0.2, 0.2);
+    int roots = 0, missing = 0, missingWithout = 0;
+    double worst = 0;
+    std::size_t dropped = cells.size();  // the check fails without the cell of the first zero
+    for (int k = 0; k < 60; ++k) {
+      const Vector3d a(c(rng), c(rng), c(rng)), b(u(rng), u(rng), u(rng));
+      double fp = s.eval(a);
+      for (int i = 1; i <= 200; ++i) {
+        const Vector3d p = a + (b - a) * (double(i - 1) / 200), q = a + (b - a) * (double(i) / 200);
+        const double fq = s.eval(q);
+        if ((fp < 0) != (fq < 0)) {
+          Vector3d lo = p, hi = q;
+          for (int it = 0; it < 60; ++it) {
+            const Vector3d m = 0.5 * (lo + hi);
+            ((s.eval(m) < 0) == (fp < 0) ? lo : hi) = m;
           }
-        m /= on;
-        const Vector3d out = m + 1e-6 * h.p.head<3>().normalized();
-        for (std::size_t j = 0; j < cells.size(); ++j) {
-          if (j == i) continue;
-          bool inside = true;
-          for (const auto& g : cells[j].faces) inside = inside && g.eval(out) < 0;
-          if (!inside) continue;
-          gap = std::max(gap, std::fabs(cells[i].poly.eval(m) - cells[j].poly.eval(m)));
-          break;
+          const Vector3d z = 0.5 * (lo + hi);
+          ++roots;
+          bool found = false, foundWithout = false;
+          for (std::size_t ci = 0; ci < cells.size(); ++ci) {
+            bool in = true;
+            for (const auto& h : cells[ci].faces) in = in && h.eval(z) <= 1e-9 * h.p.head<3>().norm();
+            if (!in) continue;
+            if (dropped == cells.size()) dropped = ci;
+            found = true;
+            foundWithout = foundWithout || ci != dropped;
+            worst = std::max(worst, std::fabs(cells[ci].quadric.eval(z)));
+          }
+          missing += !found;
+          missingWithout += !foundWithout;
         }
+        fp = fq;
       }
-    EXPECT_LT(gap, 1e-9) << "g1 " << g1;
+    }
+    EXPECT_GT(roots, 40) << "g1 " << g1;
+    EXPECT_EQ(missing, 0) << "g1 " << g1;
+    EXPECT_GT(missingWithout, 0) << "g1 " << g1;
+    EXPECT_LT(worst, 1e-9) << "g1 " << g1;
+  }
+}
+
+TEST(SimplexSpline3, SameCellsForAnyThreadCount) {
+  const SimplexSpline3 s = blob(true);
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const auto one = s.crossedCells();
+  omp_set_num_threads(3);
+  const auto three = s.crossedCells();
+  omp_set_num_threads(before);
+  ASSERT_EQ(one.size(), three.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].quadric.Q, three[i].quadric.Q);
+    ASSERT_EQ(one[i].faces.size(), three[i].faces.size());
+    for (std::size_t f = 0; f < one[i].faces.size(); ++f) EXPECT_EQ(one[i].faces[f].p, three[i].faces[f].p);
   }
 }
