@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <stdexcept>
 
 #include "modeling/bb_quadric.h"
@@ -193,76 +192,72 @@ std::vector<PlaneGroup> cuttingPlanes(const std::vector<std::array<Vec, 3>>& tri
 // F near one tetrahedron, as a sum over the leaves of the compiled basis functions:
 // F(u) = Σ_k c_k N_k(u), N_k(u) = Σ_{leaves L of k} 1_L(u) w_L Π λ(u). Leaves of several
 // basis functions share knot simplices (about 4 leaves per simplex), so the sum is kept per
-// distinct simplex S: F = Σ_S 1_S(u) T_S(u), T_S = Σ_{leaves on S} c w Π λ. A region of the
-// tetrahedron carries a State: the sum of the simplices that contain it, the list of those
-// it straddles (the ones it misses are forgotten), and per basis function the sum of its
-// terms on the contained simplices; a basis function none of whose simplices is straddled
-// any more is "resolved" (its N_k is then exact: summed into pres = Σ c_k N_k and
-// nres = Σ N_k). classify() refines a child's State from its parent's and bounds F on it:
-//   (a) F ∈ range(contained sum) + Σ over straddled S of [min(0, T_S), max(0, T_S)];
-//   (b) where the basis is a partition of unity (farther than the knot reach from the
-//       complex's boundary) the unresolved N_k (>= 0) sum to 1 - nres, so
-//       pres + min c_k (1 - nres) <= F <= pres + max c_k (1 - nres) (k unresolved).
-// Ranges of quadratics over a region are bounded from its corners (Quadric::bounds).
+// distinct simplex S: F = Σ_S 1_S(u) T_S(u), T_S = Σ_{leaves on S} c w Π λ, a quadric. A
+// region of the tetrahedron carries a State: the sum of the T_S of the simplices that
+// contain it and the list of those it straddles (the ones it misses are forgotten).
+// classify() refines a child's State from its parent's and bounds F on the region:
+//   F ∈ range(contained sum) + Σ over straddled S of [min(0, T_S), max(0, T_S)],
+// ranges over the region taken from its corners (bounds above), those of T_S also
+// intersected with T_S's range on S (its extreme BB coefficients there).
 class LocalField {
  public:
   struct State {
-    Quadric all;                                             // Σ T_S over contained S
-    Quadric pres, nres;                                      // resolved basis functions
-    std::vector<std::uint32_t> partial;                        // straddled simplices
-    std::vector<std::pair<std::uint32_t, Quadric>> pending;  // unresolved slots, their contained N terms
+    Quadric all;                         // Σ T_S over the contained S
+    std::vector<std::uint32_t> partial;  // straddled simplices
   };
 
-  LocalField(const SimplexSpline3& s, const std::vector<std::size_t>& near, bool unity) : unity_(unity) {
+  LocalField(const SimplexSpline3& s, const std::vector<std::size_t>& near) {
     const auto& B = s.basisFunctions();
     const int n = s.degree();
     struct Item {
       std::array<int, 4> key;
-      std::uint32_t slot;
-      const SimplexSpline3::Leaf* leaf;
-      Quadric term;
+      std::size_t basis, leaf;
     };
     std::vector<Item> items;
     for (std::size_t i : near) {
-      const double c = s.coefficientOf(B[i]);
-      if (c == 0.0) continue;
-      const std::uint32_t slot = std::uint32_t(coef_.size());
-      coef_.push_back(c);
+      if (s.coefficientOf(B[i]) == 0.0) continue;
       for (std::size_t l = 0; l < B[i].leaves.size(); ++l) {
-        const auto& L = B[i].leaves[l];
-        Item it{L.knots, slot, &L, productOf(&B[i].factors[l * std::size_t(n)], n, L.weight)};
+        Item it{B[i].leaves[l].knots, i, l};
         std::sort(it.key.begin(), it.key.end());
-        items.push_back(std::move(it));
+        items.push_back(it);
       }
     }
     std::stable_sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.key < b.key; });
     for (std::size_t i = 0; i < items.size(); ++i) {
+      const auto& L = B[items[i].basis].leaves[items[i].leaf];
       if (i == 0 || items[i].key != items[i - 1].key) {
         Simplex S;
-        S.leaf = items[i].leaf;
+        S.leaf = &L;
         S.knots = items[i].key;
         for (int j = 0; j < 4; ++j) {
-          const auto& f = S.leaf->bary[std::size_t(j)];
+          const auto& f = L.bary[std::size_t(j)];
           S.bary[std::size_t(j)] = Eigen::Vector4d(f.a.x(), f.a.y(), f.a.z(), f.b);
         }
         for (int id : S.knots) S.box.extend(s.knotById(id));
-        S.first = std::uint32_t(members_.size());
         simplices_.push_back(S);
       }
-      Simplex& S = simplices_.back();
-      S.term.Q += coef_[items[i].slot] * items[i].term.Q;
-      members_.emplace_back(items[i].slot, items[i].term);
-      S.last = std::uint32_t(members_.size());
+      const double c = s.coefficientOf(B[items[i].basis]);
+      simplices_.back().term.Q += productOf(&B[items[i].basis].factors[items[i].leaf * std::size_t(n)], n, c * L.weight).Q;
+    }
+    // T_S over S lies between its extreme BB coefficients there (convex hull property).
+    for (Simplex& S : simplices_) {
+      Tetrahedron t;
+      for (int a = 0; a < 4; ++a) t[std::size_t(a)] = s.knotById(S.knots[std::size_t(a)]);
+      const Eigen::Matrix4d C = BBQuadric::fromQuadric(S.term, t).C;
+      S.lo = S.hi = C(0, 0);
+      for (int a = 0; a < 4; ++a)
+        for (int b = a; b < 4; ++b) {
+          S.lo = std::min(S.lo, C(a, b));
+          S.hi = std::max(S.hi, C(a, b));
+        }
     }
   }
 
-  std::size_t simplexCount() const { return simplices_.size(); }
   const std::array<int, 4>& knots(std::uint32_t simplex) const { return simplices_[simplex].knots; }
 
   State root() const {
     State st;
     for (std::uint32_t l = 0; l < simplices_.size(); ++l) st.partial.push_back(l);
-    for (std::uint32_t k = 0; k < coef_.size(); ++k) st.pending.emplace_back(k, Quadric());
     return st;
   }
 
@@ -272,14 +267,10 @@ class LocalField {
     const std::size_t nv = V.size();
     const Eigen::AlignedBox3d box = region.box();
     const double tau = 1e-11;  // on barycentric coordinates
-    std::vector<int> at(coef_.size(), -1);  // slot → index in st.pending
-    for (std::size_t i = 0; i < st.pending.size(); ++i) at[st.pending[i].first] = int(i);
-    std::vector<char> straddled(st.pending.size(), 0);
-    std::vector<std::uint32_t> partial;
-    partial.reserve(st.partial.size());
-    double alo = 0, ahi = 0;
-    for (std::uint32_t id : st.partial) {
-      const Simplex& S = simplices_[id];
+    double slo = 0, shi = 0;
+    std::size_t keep = 0;
+    for (std::size_t q = 0; q < st.partial.size(); ++q) {
+      const Simplex& S = simplices_[st.partial[q]];
       if (!S.box.intersects(box)) continue;
       // Out: all corners beyond one face; in: all corners inside every face.
       bool in = true, out = false;
@@ -299,45 +290,18 @@ class LocalField {
       if (out) continue;
       if (in) {
         st.all.Q += S.term.Q;
-        for (std::uint32_t m = S.first; m < S.last; ++m)
-          st.pending[std::size_t(at[members_[m].first])].second.Q += members_[m].second.Q;
         continue;
       }
-      double tl, th;
+      double tl, th;  // T_S on region ∩ S
       bounds(S.term, V, tl, th, true);
-      alo += std::min(0.0, tl);
-      ahi += std::max(0.0, th);
-      for (std::uint32_t m = S.first; m < S.last; ++m) straddled[std::size_t(at[members_[m].first])] = 1;
-      partial.push_back(id);
+      slo += std::min(0.0, std::max(tl, S.lo));
+      shi += std::max(0.0, std::min(th, S.hi));
+      st.partial[keep++] = st.partial[q];
     }
-    st.partial.swap(partial);
-    double cmin = std::numeric_limits<double>::infinity(), cmax = -cmin;
-    std::size_t keep = 0;
-    for (std::size_t i = 0; i < st.pending.size(); ++i) {
-      const double c = coef_[st.pending[i].first];
-      if (!straddled[i]) {  // resolved
-        st.pres.Q += c * st.pending[i].second.Q;
-        st.nres.Q += st.pending[i].second.Q;
-        continue;
-      }
-      cmin = std::min(cmin, c);
-      cmax = std::max(cmax, c);
-      st.pending[keep++] = st.pending[i];
-    }
-    st.pending.resize(keep);
+    st.partial.resize(keep);
     bounds(st.all, V, lo, hi);
-    lo += alo;
-    hi += ahi;
-    if (unity_ && !st.pending.empty()) {
-      Quadric low(Eigen::Matrix4d(st.pres.Q - cmin * st.nres.Q)), high(Eigen::Matrix4d(st.pres.Q - cmax * st.nres.Q));
-      low.Q(3, 3) += cmin;  // pres + c (1 - nres)
-      high.Q(3, 3) += cmax;
-      double a, b;
-      bounds(low, V, a, b);
-      lo = std::max(lo, a);
-      bounds(high, V, a, b);
-      hi = std::min(hi, b);
-    }
+    lo += slo;
+    hi += shi;
   }
 
   // F on a cell: simplices still straddled (only within the tolerances) decide at its centroid.
@@ -354,13 +318,10 @@ class LocalField {
     std::array<Eigen::Vector4d, 4> bary;  // the same, packed
     std::array<int, 4> knots;             // sorted
     Eigen::AlignedBox3d box;
-    Quadric term;                       // T_S
-    std::uint32_t first = 0, last = 0;    // its leaves in members_
+    Quadric term;           // T_S
+    double lo = 0, hi = 0;  // bounds of T_S on S
   };
-  bool unity_;
-  std::vector<double> coef_;  // per slot
   std::vector<Simplex> simplices_;
-  std::vector<std::pair<std::uint32_t, Quadric>> members_;  // (slot, w Π λ) per leaf
 };
 
 }  // namespace
@@ -375,7 +336,7 @@ SimplexSpline3::CellStats& SimplexSpline3::CellStats::operator+=(const CellStats
   return *this;
 }
 
-std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bool cull, bool unity, double eps,
+std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bool cull, double eps,
                                                                CellStats& stats) const {
   std::vector<Cell> out;
   const auto& T = simplices_[t];
@@ -420,7 +381,7 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
       return out;
     }
   }
-  const LocalField field(*this, near, unity);
+  const LocalField field(*this, near);
   LocalField::State rootState = field.root();
   double rlo, rhi;
   field.classify(start, rootState, rlo, rhi);
@@ -533,48 +494,17 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
   return out;
 }
 
-std::vector<bool> SimplexSpline3::partitionOfUnity() const {
-  // Boundary faces: those of one tetrahedron only.
-  std::map<std::array<int, 3>, int> count;
-  for (const auto& T : simplices_)
-    for (int a = 0; a < 4; ++a) {
-      std::array<int, 3> f = {T[std::size_t((a + 1) % 4)], T[std::size_t((a + 2) % 4)], T[std::size_t((a + 3) % 4)]};
-      std::sort(f.begin(), f.end());
-      ++count[f];
-    }
-  std::vector<Eigen::AlignedBox3d> boundary;
-  for (const auto& [f, c] : count)
-    if (c == 1) {
-      Eigen::AlignedBox3d b;
-      for (int v : f) b.extend(verts_[std::size_t(v)]);
-      boundary.push_back(b);
-    }
-  // By continuity the partition of unity holds up to the knot reach; boxes are conservative.
-  const double reach = knotReach();
-  std::vector<bool> out(simplices_.size());
-  for (std::size_t t = 0; t < simplices_.size(); ++t) {
-    Eigen::AlignedBox3d b;
-    for (int v : simplices_[t]) b.extend(verts_[std::size_t(v)]);
-    if (!domain_.isEmpty()) b = b.intersection(domain_);
-    bool far = true;
-    for (const auto& f : boundary) far = far && std::sqrt(b.squaredExteriorDistance(f)) >= (1 - 1e-9) * reach;
-    out[t] = far;
-  }
-  return out;
-}
-
 std::vector<SimplexSpline3::Cell> SimplexSpline3::decompose(bool cull, CellStats* stats) const {
   if (n_ > 2) throw std::invalid_argument("SimplexSpline3: cells are made for degree <= 2");
   Eigen::AlignedBox3d all;
   for (const Vec& v : verts_) all.extend(v);
   const double eps = 1e-10 * all.diagonal().norm();
   const std::size_t n = simplices_.size();
-  const std::vector<bool> unity = partitionOfUnity();
   std::vector<std::vector<Cell>> per(n);
   std::vector<CellStats> st(n);
 #pragma omp parallel for schedule(dynamic, 1)
   for (long long t = 0; t < (long long)n; ++t)
-    per[std::size_t(t)] = decomposeTet(std::size_t(t), cull, unity[std::size_t(t)], eps, st[std::size_t(t)]);
+    per[std::size_t(t)] = decomposeTet(std::size_t(t), cull, eps, st[std::size_t(t)]);
   std::vector<Cell> out;
   CellStats total;
   for (std::size_t t = 0; t < n; ++t) {

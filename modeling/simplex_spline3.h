@@ -4,23 +4,27 @@
 // surfaces for degree 2), with knots on the vertices it is Bernstein-Bézier per tetrahedron
 // joined C0 (G0).
 //
-// Cells: F is one polynomial in each cell of the arrangement of the knot triangles (three
-// knots of one knot set). Each mesh tetrahedron (∩ the optional domain box) is cut
-// recursively (convex_polyhedron.h): a region is split by the first plane, in order of
-// decreasing triangle area, one of whose knot triangles crosses its interior; the planes
-// that cross no triangle inside a region are dropped for its whole subtree. Knot triangles
-// are taken only from the basis functions whose support box meets the tetrahedron; planes
-// that coincide (within 1e-11 relative) are one plane, cut once, so neighbouring cells get
-// exactly opposite half-spaces. Each cell's polynomial is the recursion run symbolically at
-// its centroid.
+// Cells: F = Σ over the leaves of the compiled recursion of 1_S(u) c w Π λ(u), so F is one
+// polynomial in each cell of the arrangement of the leaves' knot simplices S. Each mesh
+// tetrahedron (∩ the optional domain box) is cut recursively (convex_polyhedron.h) by the
+// planes of the faces of the simplices that straddle it, from the basis functions whose
+// support box overlaps it; coinciding planes (within 1e-11 relative) are one plane, cut once,
+// so neighbouring cells get exactly opposite half-spaces. A region is cut by the plane,
+// among the first 16 (largest triangle first) that one of whose triangles crosses its
+// interior, that leaves most of it on its thinner side; planes that cross no triangle inside
+// a region are dropped for its whole subtree, and a region that straddles no simplex any
+// more is a cell. Its polynomial (a quadric for degree <= 2) is the sum of the simplices
+// that contain it, carried down the recursion.
 //
 // Culling (crossedCells, toPrimitives) never drops a cell F can vanish in:
-//  - a region is dropped before being split further when the coefficients of every basis
-//    function whose support box meets it have one strict sign (F is a convex combination
-//    of them there: partition of unity, N >= 0);
-//  - a cell is dropped when its polynomial's degree-2 BB coefficients have one strict sign
-//    on the parent tetrahedron, or on every tetrahedron of a fan covering the cell
-//    (convex hull property), unless its corners already show both signs.
+//  - a tetrahedron is dropped when the coefficients of every basis function whose support
+//    box overlaps it have one strict sign (F = Σ c_k N_k with N_k >= 0, not all zero);
+//  - a region is dropped before being cut further when a bound on F there excludes 0: the
+//    simplices containing it summed exactly, each straddled one counted between 0 and its
+//    term, terms bounded over the region's corners and over the simplex (BB hull);
+//  - a cell is dropped when its quadric's values at the corners have one strict sign and
+//    its BB coefficients have that sign on the parent tetrahedron, or on every tetrahedron
+//    of a fan covering the cell (convex hull property).
 // Tetrahedra are processed in parallel (OpenMP); the output order is the tetrahedra's.
 #pragma once
 #include <array>
@@ -54,26 +58,23 @@ class SimplexSpline3 : public SimplexSplineBase<3> {
   struct CellStats {
     std::size_t tets = 0;            // mesh tetrahedra meeting the domain
     std::size_t tets_culled = 0;     // dropped whole by the coefficient signs
-    std::size_t regions_culled = 0;  // regions (tetrahedra included) dropped before their cells were made
-    std::size_t cells = 0;           // cells made (polynomial computed)
+    std::size_t regions_culled = 0;  // regions (those tetrahedra included) dropped before being cut into cells
+    std::size_t cells = 0;           // cells made
     std::size_t crossed = 0;         // cells F can vanish in (emitted)
-    std::size_t planes = 0;          // distinct knot-triangle planes met by the tetrahedra (summed)
+    std::size_t planes = 0;          // distinct cutting planes of the tetrahedra (summed)
     CellStats& operator+=(const CellStats& o);
   };
-  // Every cell: convex polyhedra covering the tetrahedralisation (∩ domain), one polynomial
-  // each, `crossed` set by the BB tests.
+  // Every cell: convex polyhedra covering the tetrahedralisation (∩ domain), one quadric
+  // each, `crossed` set by the cell tests. Degree <= 2.
   std::vector<Cell> cells(CellStats* stats = nullptr) const;
-  // Only the cells F can vanish in, regions of one coefficient sign dropped before splitting.
+  // Only the cells F can vanish in: tetrahedra and regions culled before they are cut.
   std::vector<Cell> crossedCells(CellStats* stats = nullptr) const;
   // The surface F = 0: one quadric per crossed cell, clipped by the cell's facets.
   std::vector<Primitive> toPrimitives(int material = 0, int object = 0, CellStats* stats = nullptr) const;
 
  private:
   std::vector<Cell> decompose(bool cull, CellStats* stats) const;
-  std::vector<Cell> decomposeTet(std::size_t tet, bool cull, bool unity, double eps, CellStats& stats) const;
-  // Per tetrahedron: is it (∩ domain) farther than the knot reach from the complex's
-  // boundary, where the basis is a partition of unity?
-  std::vector<bool> partitionOfUnity() const;
+  std::vector<Cell> decomposeTet(std::size_t tet, bool cull, double eps, CellStats& stats) const;
 };
 
 // Knot clouds for a tetrahedralisation (simplexKnotClouds<3>).

@@ -152,15 +152,62 @@ TEST(SimplexSpline3, ReproducesQuadraticsExactly) {
     }
 }
 
-// A closed surface in a 2 x 2 x 2 Kuhn grid with generic knots (and with knots on the
-// vertices), shown inside the domain where the basis is a partition of unity.
-SimplexSpline3 blob(bool g1) {
-  const TetMesh m = kuhnMesh(Eigen::AlignedBox3d(Vector3d(-1, -1, -1), Vector3d(1, 1, 1)), 2, 2, 2);
-  SimplexSpline3 s(2, m.vertices, m.tets, knotClouds3(m.vertices, m.tets, 2, g1, 0.2));
-  const double d = 1 - s.knotReach();
+// A closed surface in an n x n x n Kuhn grid of [-h, h]³ shown inside the knot reach.
+SimplexSpline3 blob(bool g1, int n = 2, double h = 1, double radius = 0.2,
+                    const char* field = "x^2 + y^2 + z^2 + 0.5 x y z - 0.36") {
+  const TetMesh m = kuhnMesh(Eigen::AlignedBox3d(Vector3d(-h, -h, -h), Vector3d(h, h, h)), n, n, n);
+  SimplexSpline3 s(2, m.vertices, m.tets, knotClouds3(m.vertices, m.tets, 2, g1, radius));
+  const double d = h - s.knotReach();
   s.setDomain(Eigen::AlignedBox3d(Vector3d(-d, -d, -d), Vector3d(d, d, d)));
-  s.setCoefficients(s.grevilleCoefficients(Polynomial3::parse("x^2 + y^2 + z^2 + 0.5 x y z - 0.36")));
+  s.setCoefficients(s.grevilleCoefficients(Polynomial3::parse(field)));
   return s;
+}
+
+// Zeros of F along random segments from near the centre to anywhere in the domain (sign
+// changes on 200 steps, then bisection) must lie in one of `cells`, whose quadric vanishes
+// there. `withoutOne` counts the zeros missed when the cell of the first zero is left out,
+// so that the check is seen to fail.
+struct ZeroCheck {
+  int roots = 0, missing = 0, withoutOne = 0;
+  double worst = 0;
+};
+ZeroCheck zerosInCells(const SimplexSpline3& s, const std::vector<SimplexSpline3::Cell>& cells, std::mt19937& rng,
+                       int segments) {
+  ZeroCheck z;
+  const double d = s.domain().max().x();
+  std::uniform_real_distribution<double> u(-d, d), c(-0.2, 0.2);
+  std::size_t dropped = cells.size();
+  for (int k = 0; k < segments; ++k) {
+    const Vector3d a(c(rng), c(rng), c(rng)), b(u(rng), u(rng), u(rng));
+    double fp = s.eval(a);
+    for (int i = 1; i <= 200; ++i) {
+      const Vector3d p = a + (b - a) * (double(i - 1) / 200), q = a + (b - a) * (double(i) / 200);
+      const double fq = s.eval(q);
+      if ((fp < 0) != (fq < 0)) {
+        Vector3d lo = p, hi = q;
+        for (int it = 0; it < 60; ++it) {
+          const Vector3d m = 0.5 * (lo + hi);
+          ((s.eval(m) < 0) == (fp < 0) ? lo : hi) = m;
+        }
+        const Vector3d x = 0.5 * (lo + hi);
+        ++z.roots;
+        bool found = false, foundWithout = false;
+        for (std::size_t ci = 0; ci < cells.size(); ++ci) {
+          bool in = true;
+          for (const auto& h : cells[ci].faces) in = in && h.eval(x) <= 1e-9 * h.p.head<3>().norm();
+          if (!in) continue;
+          if (dropped == cells.size()) dropped = ci;
+          found = true;
+          foundWithout = foundWithout || ci != dropped;
+          z.worst = std::max(z.worst, std::fabs(cells[ci].quadric.eval(x)));
+        }
+        z.missing += !found;
+        z.withoutOne += !foundWithout;
+      }
+      fp = fq;
+    }
+  }
+  return z;
 }
 
 TEST(SimplexSpline3, CullingKeepsEveryZeroOfTheSpline) {
@@ -178,7 +225,7 @@ TEST(SimplexSpline3, CullingKeepsEveryZeroOfTheSpline) {
       EXPECT_GT(kept.regions_culled, 0u);
     }
     // The emitted cells are cells of the full decomposition that it marks crossed too (the
-    // region culling only skips work), and the others have F of one strict sign.
+    // region culling only skips work).
     std::map<std::vector<double>, const SimplexSpline3::Cell*> byCorners;
     auto key = [](const SimplexSpline3::Cell& c) {
       std::vector<double> k;
@@ -192,49 +239,32 @@ TEST(SimplexSpline3, CullingKeepsEveryZeroOfTheSpline) {
       EXPECT_TRUE(it->second->crossed);
       EXPECT_EQ((it->second->quadric.Q - c.quadric.Q).cwiseAbs().maxCoeff(), 0.0);
     }
-    // Zeros of F along random segments from near the centre (inside) to anywhere in the
-    // domain (sign changes on 200 steps, then bisection) lie in an emitted cell, whose
-    // quadric vanishes there.
-    const double d = s.domain().max().x();
-    std::uniform_real_distribution<double> u(-d, d), c(-0.2, 0.2);
-    int roots = 0, missing = 0, missingWithout = 0;
-    double worst = 0;
-    std::size_t dropped = cells.size();  // the check fails without the cell of the first zero
-    for (int k = 0; k < 60; ++k) {
-      const Vector3d a(c(rng), c(rng), c(rng)), b(u(rng), u(rng), u(rng));
-      double fp = s.eval(a);
-      for (int i = 1; i <= 200; ++i) {
-        const Vector3d p = a + (b - a) * (double(i - 1) / 200), q = a + (b - a) * (double(i) / 200);
-        const double fq = s.eval(q);
-        if ((fp < 0) != (fq < 0)) {
-          Vector3d lo = p, hi = q;
-          for (int it = 0; it < 60; ++it) {
-            const Vector3d m = 0.5 * (lo + hi);
-            ((s.eval(m) < 0) == (fp < 0) ? lo : hi) = m;
-          }
-          const Vector3d z = 0.5 * (lo + hi);
-          ++roots;
-          bool found = false, foundWithout = false;
-          for (std::size_t ci = 0; ci < cells.size(); ++ci) {
-            bool in = true;
-            for (const auto& h : cells[ci].faces) in = in && h.eval(z) <= 1e-9 * h.p.head<3>().norm();
-            if (!in) continue;
-            if (dropped == cells.size()) dropped = ci;
-            found = true;
-            foundWithout = foundWithout || ci != dropped;
-            worst = std::max(worst, std::fabs(cells[ci].quadric.eval(z)));
-          }
-          missing += !found;
-          missingWithout += !foundWithout;
-        }
-        fp = fq;
-      }
-    }
-    EXPECT_GT(roots, 40) << "g1 " << g1;
-    EXPECT_EQ(missing, 0) << "g1 " << g1;
-    EXPECT_GT(missingWithout, 0) << "g1 " << g1;
-    EXPECT_LT(worst, 1e-9) << "g1 " << g1;
+    const ZeroCheck z = zerosInCells(s, cells, rng, 60);
+    EXPECT_GT(z.roots, 40) << "g1 " << g1;
+    EXPECT_EQ(z.missing, 0) << "g1 " << g1;
+    EXPECT_GT(z.withoutOne, 0) << "g1 " << g1;
+    EXPECT_LT(z.worst, 1e-9) << "g1 " << g1;
   }
+}
+
+TEST(SimplexSpline3, CullingDoesNotAssumeAPartitionOfUnity) {
+  // Knot clouds of 0.6 x the shortest edge: the basis sums to more than 1 in small places
+  // (0.3 % of the domain, up to 1.004) even beyond the knot reach, so a bound that assumed
+  // Σ N = 1 there dropped regions F vanishes in (5 of the zeros below were missed); the bounds
+  // used hold for any knots.
+  std::mt19937 rng(5);
+  const SimplexSpline3 s = blob(true, 3, 1.5, 0.6, "x^2 + y^2 + z^2 - 0.5");
+  SimplexSpline3 ones = s;
+  ones.setCoefficients(std::vector<std::vector<double>>(s.tets().size(), std::vector<double>(10, 1.0)));
+  const double d = s.domain().max().x();
+  std::uniform_real_distribution<double> u(-d, d);
+  double excess = 0;
+  for (int k = 0; k < 20000; ++k) excess = std::max(excess, ones.eval(Vector3d(u(rng), u(rng), u(rng))) - 1);
+  EXPECT_GT(excess, 1e-3);
+  const ZeroCheck z = zerosInCells(s, s.crossedCells(), rng, 100);
+  EXPECT_GT(z.roots, 60);
+  EXPECT_EQ(z.missing, 0);
+  EXPECT_LT(z.worst, 1e-9);
 }
 
 TEST(SimplexSpline3, SameCellsForAnyThreadCount) {
