@@ -201,9 +201,13 @@ std::vector<PlaneGroup> cuttingPlanes(const std::vector<std::array<Vec, 3>>& tri
 // intersected with T_S's range on S (its extreme BB coefficients there).
 class LocalField {
  public:
+  struct Straddled {
+    std::uint32_t simplex;
+    std::uint8_t faces;  // bit j: the region has corners on both sides of face j
+  };
   struct State {
-    Quadric all;                         // Σ T_S over the contained S
-    std::vector<std::uint32_t> partial;  // straddled simplices
+    Quadric all;                     // Σ T_S over the contained S
+    std::vector<Straddled> partial;  // straddled simplices
   };
 
   LocalField(const SimplexSpline3& s, const std::vector<std::size_t>& near) {
@@ -257,7 +261,7 @@ class LocalField {
 
   State root() const {
     State st;
-    for (std::uint32_t l = 0; l < simplices_.size(); ++l) st.partial.push_back(l);
+    for (std::uint32_t l = 0; l < simplices_.size(); ++l) st.partial.push_back(Straddled{l, 0xF});
     return st;
   }
 
@@ -270,25 +274,26 @@ class LocalField {
     double slo = 0, shi = 0;
     std::size_t keep = 0;
     for (std::size_t q = 0; q < st.partial.size(); ++q) {
-      const Simplex& S = simplices_[st.partial[q]];
+      Straddled& p = st.partial[q];
+      const Simplex& S = simplices_[p.simplex];
       if (!S.box.intersects(box)) continue;
-      // Out: all corners beyond one face; in: all corners inside every face.
-      bool in = true, out = false;
-      for (const Eigen::Vector4d& f : S.bary) {
+      // Out: all corners beyond one face; in: all corners inside every face. A face the
+      // parent region lay inside of is not looked at again.
+      bool out = false;
+      for (int j = 0; j < 4 && !out; ++j) {
+        if (!(p.faces & (1u << j))) continue;
+        const Eigen::Vector4d& f = S.bary[std::size_t(j)];
         bool pos = false, neg = false;
         for (std::size_t v = 0; v < nv && !(pos && neg); ++v) {
           const double x = f.head<3>().dot(V[v].x) + f.w();
           pos = pos || x > tau;
           neg = neg || x < -tau;
         }
-        if (!pos) {
-          out = true;
-          break;
-        }
-        in = in && !neg;
+        out = !pos;
+        if (!neg) p.faces = std::uint8_t(p.faces & ~(1u << j));
       }
       if (out) continue;
-      if (in) {
+      if (p.faces == 0) {
         st.all.Q += S.term.Q;
         continue;
       }
@@ -296,7 +301,7 @@ class LocalField {
       bounds(S.term, V, tl, th, true);
       slo += std::min(0.0, std::max(tl, S.lo));
       shi += std::max(0.0, std::min(th, S.hi));
-      st.partial[keep++] = st.partial[q];
+      st.partial[keep++] = p;
     }
     st.partial.resize(keep);
     bounds(st.all, V, lo, hi);
@@ -307,8 +312,8 @@ class LocalField {
   // F on a cell: simplices still straddled (only within the tolerances) decide at its centroid.
   Quadric polynomial(const State& st, const Vec& centre) const {
     Quadric f = st.all;
-    for (std::uint32_t id : st.partial)
-      if (SimplexSpline3::inside(*simplices_[id].leaf, centre)) f.Q += simplices_[id].term.Q;
+    for (const Straddled& p : st.partial)
+      if (SimplexSpline3::inside(*simplices_[p.simplex].leaf, centre)) f.Q += simplices_[p.simplex].term.Q;
     return f;
   }
 
@@ -388,8 +393,8 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
 
   // Cuts: the faces of the straddled simplices (F is one polynomial between them), each once.
   std::vector<std::array<int, 3>> triples;
-  for (std::uint32_t l : rootState.partial) {
-    const auto& k = field.knots(l);  // sorted
+  for (const auto& p : rootState.partial) {
+    const auto& k = field.knots(p.simplex);  // sorted
     triples.push_back({k[1], k[2], k[3]});
     triples.push_back({k[0], k[2], k[3]});
     triples.push_back({k[0], k[1], k[3]});
@@ -402,12 +407,8 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
   const std::vector<PlaneGroup> groups = cuttingPlanes(triangles, start, planes, eps);
   stats.planes += groups.size();
 
-  // Does a triangle of the group cross the region's interior?
-  auto crosses = [&](const PlaneGroup& g, const ConvexPolyhedron& poly, const Eigen::AlignedBox3d& box) {
-    if (!g.box.intersects(box)) return false;
-    bool neg, pos;
-    poly.sides(planes.unit[std::size_t(g.id)], eps, neg, pos);
-    if (!neg || !pos) return false;
+  // Does a triangle of the group (whose plane is known to cut the region) cross its interior?
+  auto trianglesCross = [&](const PlaneGroup& g, const ConvexPolyhedron& poly, const Eigen::AlignedBox3d& box) {
     for (const auto& tr : g.triangles) {
       Eigen::AlignedBox3d tb;
       for (const Vec& v : tr) tb.extend(v);
@@ -417,9 +418,10 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
   };
 
   // Recursive cutting, depth first (negative side first): deterministic. A region is cut by
-  // the plane, among the first 16 that cross it in the groups' order, that leaves the most
-  // of it on its thinner side (balanced cuts shrink regions fastest, and their bounds with
-  // them); planes met before the first crossing one are dropped for the whole subtree.
+  // the plane, among the first 16 of its list (largest triangle first) that cut it, that
+  // leaves the most of it on its thinner side and one of whose triangles crosses it
+  // (balanced cuts shrink regions fastest, and their bounds with them). Planes found not to
+  // cut the region, or whose triangles miss it, are dropped for the whole subtree.
   struct Region {
     ConvexPolyhedron poly;
     std::vector<std::uint32_t> planes;  // groups that may still cross it, in order
@@ -446,30 +448,49 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
       }
     }
     const Eigen::AlignedBox3d box = r.poly.box();
-    std::size_t first = r.planes.size(), best = first;
-    double depth = -1;
-    for (std::size_t k = 0, found = 0; k < r.planes.size() && found < 16; ++k) {
-      const PlaneGroup& g = groups[r.planes[k]];
-      if (!crosses(g, r.poly, box)) continue;
-      first = std::min(first, k);
-      ++found;
-      double mn = 0, mx = 0;
-      for (const auto& v : r.poly.vertices()) {
-        const double x = planes.unit[std::size_t(g.id)].head<3>().dot(v.x) + planes.unit[std::size_t(g.id)].w();
-        mn = std::min(mn, x);
-        mx = std::max(mx, x);
+    std::size_t best = r.planes.size();
+    for (bool more = true; more && best == r.planes.size();) {
+      std::vector<std::pair<double, std::size_t>> cutting;  // (depth, index in r.planes)
+      std::vector<char> drop(r.planes.size(), 0);
+      for (std::size_t k = 0; k < r.planes.size() && cutting.size() < 16; ++k) {
+        const PlaneGroup& g = groups[r.planes[k]];
+        double mn = 0, mx = 0;
+        if (g.box.intersects(box))
+          for (const auto& v : r.poly.vertices()) {
+            const double x = planes.unit[std::size_t(g.id)].head<3>().dot(v.x) + planes.unit[std::size_t(g.id)].w();
+            mn = std::min(mn, x);
+            mx = std::max(mx, x);
+          }
+        if (mn < -eps && mx > eps)
+          cutting.emplace_back(std::min(-mn, mx), k);
+        else
+          drop[k] = 1;
       }
-      if (std::min(-mn, mx) > depth) {
-        depth = std::min(-mn, mx);
-        best = k;
+      more = cutting.size() == 16;  // when all 16 fail, look further down the list
+      std::stable_sort(cutting.begin(), cutting.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+      for (const auto& [depth, k] : cutting) {
+        if (trianglesCross(groups[r.planes[k]], r.poly, box)) {
+          best = k;
+          break;
+        }
+        drop[k] = 1;
       }
+      std::vector<std::uint32_t> kept;
+      std::size_t keptBest = 0;
+      for (std::size_t k = 0; k < r.planes.size(); ++k) {
+        if (k == best) keptBest = kept.size();
+        if (!drop[k]) kept.push_back(r.planes[k]);
+      }
+      r.planes.swap(kept);
+      if (best < kept.size()) best = keptBest;
+      else best = r.planes.size();
     }
     if (best < r.planes.size()) {
       Region a{{}, {}, {}, false}, b{{}, {}, {}, false};
       if (!r.poly.split(groups[r.planes[best]].id, planes.unit, eps, a.poly, b.poly))
         throw std::logic_error("SimplexSpline3: a crossing plane did not cut");
-      for (std::size_t k = first; k < r.planes.size(); ++k)
-        if (k != best) a.planes.push_back(r.planes[k]);
+      a.planes = r.planes;
+      a.planes.erase(a.planes.begin() + std::ptrdiff_t(best));
       b.planes = a.planes;
       b.state = r.state;
       a.state = std::move(r.state);
