@@ -361,43 +361,75 @@ Polynomial3 SimplexSplineBase<D>::localPolynomial(const Vec& probe, const std::v
 }
 
 template <int D>
+template <class Rule>
+std::vector<std::vector<double>> SimplexSplineBase<D>::coefficientsBy(Rule rule) const {
+  std::vector<std::vector<double>> out(simplices_.size(), std::vector<double>(betas_.size()));
+  for (std::size_t s = 0; s < simplices_.size(); ++s)
+    for (std::size_t k = 0; k < betas_.size(); ++k) {
+      std::vector<Eigen::Vector3d> U;
+      for (const Vec& q : lowerSet(s, betas_[k])) U.push_back(to3<D>(q));
+      Eigen::Vector3d xi = Eigen::Vector3d::Zero();  // the Greville point
+      if (U.empty()) {
+        for (int v : simplices_[s]) xi += to3<D>(verts_[std::size_t(v)]) / double(D + 1);
+      } else {
+        for (const auto& q : U) xi += q / double(U.size());
+      }
+      out[s][k] = rule(U, xi);
+    }
+  return out;
+}
+
+namespace {
+
+// The blossom (polar form) of p(u) = uᵀ A u + g·u + c at U (|U| <= 2):
+// P(a, b) = aᵀ A b + ½ g·(a + b) + c, P(a) = p(a), P() = c.
+double blossom(const Eigen::Matrix3d& A, const Eigen::Vector3d& g, double c, const std::vector<Eigen::Vector3d>& U) {
+  if (U.size() == 1) return U[0].dot(A * U[0]) + g.dot(U[0]) + c;
+  if (U.size() == 2) return U[0].dot(A * U[1]) + 0.5 * g.dot(U[0] + U[1]) + c;
+  return c;
+}
+
+}  // namespace
+
+template <int D>
 std::vector<std::vector<double>> SimplexSplineBase<D>::blossomCoefficients(const Polynomial3& p) const {
   if (n_ > 2) throw std::invalid_argument("blossomCoefficients: implemented for degree <= 2");
   if (p.degree() > n_) throw std::invalid_argument("blossomCoefficients: polynomial degree above the spline degree");
-  // p(u) = uᵀ A u + g·u + c; blossom P(a, b) = aᵀ A b + ½ g·(a + b) + c; P(a) = p(a).
   Eigen::Matrix3d A;
   A << p.coefficient(2, 0, 0), 0.5 * p.coefficient(1, 1, 0), 0.5 * p.coefficient(1, 0, 1),  //
       0.5 * p.coefficient(1, 1, 0), p.coefficient(0, 2, 0), 0.5 * p.coefficient(0, 1, 1),     //
       0.5 * p.coefficient(1, 0, 1), 0.5 * p.coefficient(0, 1, 1), p.coefficient(0, 0, 2);
   const Eigen::Vector3d g(p.coefficient(1, 0, 0), p.coefficient(0, 1, 0), p.coefficient(0, 0, 1));
   const double c = p.coefficient(0, 0, 0);
-  std::vector<std::vector<double>> out(simplices_.size(), std::vector<double>(betas_.size()));
-  for (std::size_t s = 0; s < simplices_.size(); ++s)
-    for (std::size_t k = 0; k < betas_.size(); ++k) {
-      const auto U = lowerSet(s, betas_[k]);
-      double v = c;
-      if (U.size() == 1) v = p.eval(to3<D>(U[0]));
-      if (U.size() == 2) v = to3<D>(U[0]).dot(A * to3<D>(U[1])) + 0.5 * g.dot(to3<D>(U[0]) + to3<D>(U[1])) + c;
-      out[s][k] = v;
-    }
-  return out;
+  return coefficientsBy([&](const std::vector<Eigen::Vector3d>& U, const Eigen::Vector3d&) { return blossom(A, g, c, U); });
 }
 
 template <int D>
 std::vector<std::vector<double>> SimplexSplineBase<D>::grevilleCoefficients(const Polynomial3& h) const {
-  std::vector<std::vector<double>> out(simplices_.size(), std::vector<double>(betas_.size()));
-  for (std::size_t s = 0; s < simplices_.size(); ++s)
-    for (std::size_t k = 0; k < betas_.size(); ++k) {
-      const auto U = lowerSet(s, betas_[k]);
-      Vec xi = Vec::Zero();
-      if (U.empty()) {
-        for (int v : simplices_[s]) xi += verts_[std::size_t(v)] / double(D + 1);
-      } else {
-        for (const Vec& q : U) xi += q / double(U.size());
-      }
-      out[s][k] = h.eval(to3<D>(xi));
+  return coefficientsBy([&](const std::vector<Eigen::Vector3d>&, const Eigen::Vector3d& xi) { return h.eval(xi); });
+}
+
+template <int D>
+std::vector<std::vector<double>> SimplexSplineBase<D>::taylorCoefficients(const Polynomial3& h) const {
+  if (n_ > 2) throw std::invalid_argument("taylorCoefficients: implemented for degree <= 2");
+  Polynomial3 d1[3], d2[3][3];
+  for (int a = 0; a < 3; ++a) {
+    d1[a] = h.derivative(a);
+    for (int b = 0; b < 3; ++b) d2[a][b] = d1[a].derivative(b);
+  }
+  return coefficientsBy([&](const std::vector<Eigen::Vector3d>& U, const Eigen::Vector3d& xi) {
+    // T(u) = h(xi) + ∇h(xi)·(u - xi) + ½ (u - xi)ᵀ H (u - xi), written as uᵀ A u + g·u + c.
+    Eigen::Vector3d grad;
+    Eigen::Matrix3d H;
+    for (int a = 0; a < 3; ++a) {
+      grad[a] = d1[a].eval(xi);
+      for (int b = 0; b < 3; ++b) H(a, b) = d2[a][b].eval(xi);
     }
-  return out;
+    const Eigen::Matrix3d A = 0.5 * H;
+    const Eigen::Vector3d g = grad - H * xi;
+    const double c = h.eval(xi) - grad.dot(xi) + 0.5 * xi.dot(H * xi);
+    return blossom(A, g, c, U);
+  });
 }
 
 template <int D>

@@ -66,6 +66,10 @@ class SimplexSplineBase {
   // Coefficients sampling a function at the Greville points (mean of U^I_β; the simplex's
   // centroid for n = 0).
   std::vector<std::vector<double>> grevilleCoefficients(const Polynomial3& h) const;
+  // Coefficients of the blossoms at U^I_β of h's second-order Taylor polynomial at the
+  // Greville point (a quasi-interpolant: exact for quadratics, O(h³) error otherwise).
+  // Implemented for n <= 2.
+  std::vector<std::vector<double>> taylorCoefficients(const Polynomial3& h) const;
 
   // Optional display domain (an axis-aligned box): cells are clipped to it. The partition of
   // unity, hence polynomial reproduction, holds on the complex except within the knot
@@ -107,6 +111,9 @@ class SimplexSplineBase {
   SimplexSplineBase(const char* name, int degree, int maxDegree, std::vector<Vec> vertices,
                     std::vector<Simplex> simplices, std::vector<std::vector<Vec>> knots);
   std::size_t basisIndex(std::size_t simplex, std::size_t beta) const { return simplex * betas_.size() + beta; }
+  // rule(U, ξ) for every (I, β): U^I_β and the Greville point, in 3D (z = 0 for D = 2).
+  template <class Rule>
+  std::vector<std::vector<double>> coefficientsBy(Rule rule) const;
   // localPolynomial with the candidate basis functions given (a superset of those not zero
   // at the probe, e.g. basisNear of a box around it).
   Polynomial3 localPolynomial(const Vec& probe, const std::vector<std::size_t>& candidates) const;
