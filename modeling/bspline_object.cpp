@@ -202,7 +202,7 @@ std::vector<Primitive> build(const JsonNode& o, ObjectContext& ctx) {
   } else {
     const auto start = std::chrono::steady_clock::now();
     SimplexSpline3::CellStats st;
-    std::vector<Primitive> prims = spline.toPrimitives(ctx.material, 0, &st);
+    std::vector<Primitive> prims = spline.toPrimitives(ctx.material, 0, &st, o.boolean("cull", true));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char note[256];
     std::snprintf(note, sizeof note,

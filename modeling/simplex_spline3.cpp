@@ -542,9 +542,9 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::crossedCells(CellStats* stats)
   return decompose(true, stats);
 }
 
-std::vector<Primitive> SimplexSpline3::toPrimitives(int material, int object, CellStats* stats) const {
+std::vector<Primitive> SimplexSpline3::toPrimitives(int material, int object, CellStats* stats, bool cull) const {
   std::vector<Primitive> out;
-  for (Cell& c : crossedCells(stats)) {
+  for (Cell& c : decompose(cull, stats)) {
     Primitive prim;
     prim.quadric = c.quadric;
     prim.clip = std::move(c.faces);

@@ -69,8 +69,10 @@ class SimplexSpline3 : public SimplexSplineBase<3> {
   std::vector<Cell> cells(CellStats* stats = nullptr) const;
   // Only the cells F can vanish in: tetrahedra and regions culled before they are cut.
   std::vector<Cell> crossedCells(CellStats* stats = nullptr) const;
-  // The surface F = 0: one quadric per crossed cell, clipped by the cell's facets.
-  std::vector<Primitive> toPrimitives(int material = 0, int object = 0, CellStats* stats = nullptr) const;
+  // The surface F = 0: one quadric per crossed cell (every cell with cull = false), clipped by
+  // the cell's facets.
+  std::vector<Primitive> toPrimitives(int material = 0, int object = 0, CellStats* stats = nullptr,
+                                      bool cull = true) const;
 
  private:
   std::vector<Cell> decompose(bool cull, CellStats* stats) const;

@@ -2,7 +2,7 @@
 // quadratics, cells that reproduce the spline, G0 across cell faces (and G1 with generic
 // knots), culling that keeps every cell F can vanish in (every zero of F found along random
 // segments lies in an emitted cell), deterministic output for any thread count; the
-// "bspline" scene type with "dimension": 3 (its cells, its errors).
+// "bspline" scene type with "dimension": 3 (its cells, its errors, culling changes no pixel).
 #include <gtest/gtest.h>
 
 #include <omp.h>
@@ -19,6 +19,7 @@
 #include "modeling/scene_error.h"
 #include "modeling/scene_loader.h"
 #include "modeling/simplex_spline3.h"
+#include "raster/reference_renderer.h"
 
 using namespace qacc;
 using Eigen::Vector3d;
@@ -430,4 +431,17 @@ TEST(SimplexSpline3, SceneTypeErrorsNameFileAndPath) {
   failsWhole(head + R"js("dimension": 3, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
                          "tetrahedra": [[0, 1, 2, 3]], "coefficients": [[1, 2, 3]]}]})js",
              "/objects/0/coefficients/0");
+}
+
+TEST(SimplexSpline3, SceneCullingChangesNoPixel) {
+  // "cull": false emits every cell of the decomposition; the culled scene draws the same.
+  const Scene culled = parseScene(volumeScene(""), "v.json", ".");
+  const Scene full = parseScene(volumeScene(R"js(, "cull": false)js"), "v.json", ".");
+  EXPECT_LT(4 * culled.primitives.size(), full.primitives.size());
+  const FrameBuffer a = renderReference(culled, 2), b = renderReference(full, 2);
+  EXPECT_GT(a.covered(), 2000u);
+  int differ = 0;
+  for (std::size_t i = 0; i < a.depth.size(); ++i)
+    differ += (a.object[i] >= 0) != (b.object[i] >= 0) || (a.object[i] >= 0 && a.depth[i] != b.depth[i]);
+  EXPECT_EQ(differ, 0);
 }
