@@ -109,13 +109,18 @@ bool BBQuadric::isProvablyEmpty() const {
   return all_pos || all_neg;
 }
 
-HalfSpace facePlane(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-                    const Eigen::Vector3d& inside) {
+Eigen::Vector4d canonicalPlane(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   std::array<Eigen::Vector3d, 3> p = {a, b, c};
   std::sort(p.begin(), p.end(), lexLess);
   const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
-  if (n.squaredNorm() == 0.0) throw std::invalid_argument("facePlane: degenerate triangle");
-  const HalfSpace h(Eigen::Vector4d(n.x(), n.y(), n.z(), -n.dot(p[0])));
+  return Eigen::Vector4d(n.x(), n.y(), n.z(), -n.dot(p[0]));
+}
+
+HalfSpace facePlane(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                    const Eigen::Vector3d& inside) {
+  const Eigen::Vector4d plane = canonicalPlane(a, b, c);
+  if (plane.head<3>().squaredNorm() == 0.0) throw std::invalid_argument("facePlane: degenerate triangle");
+  const HalfSpace h(plane);
   const double s = h.eval(inside);
   if (s == 0.0) throw std::invalid_argument("facePlane: the inside point lies on the plane");
   return s < 0.0 ? h : h.opposite();

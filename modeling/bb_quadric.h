@@ -89,6 +89,10 @@ struct BBQuadric {
   Primitive toPrimitive(int material = 0, int object = 0, bool solid = false) const;
 };
 
+// The plane through a, b, c as (n, -n·p0) with n = (p1 - p0) x (p2 - p0), the points sorted
+// lexicographically: every caller that names the same three points (in any order) gets
+// bit-identical coefficients. Zero for a degenerate triangle.
+Eigen::Vector4d canonicalPlane(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 // Canonical half-space of the plane through a, b, c keeping the side of `inside` (which
 // must not lie on the plane). The plane's coefficients are computed from the three points
 // sorted lexicographically, so every caller that names the same three points (in any

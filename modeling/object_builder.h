@@ -21,6 +21,7 @@ struct ObjectContext {
   int material;               // the object's material index (from "material" or default)
   bool solid;                 // the object's "solid" flag
   bool has_material = false;  // true when the object named its "material" explicitly
+  std::string note;           // the builder's one-line account of what it built (qacc info)
   std::string resolve(const std::string& path) const;  // relative → directory/path
 };
 

@@ -19,6 +19,7 @@ struct SceneObject {
   std::size_t count = 0;      // number of primitives
   int material = 0;           // the object's material
   int exact_surface = -1;     // index into Scene::exact_surfaces, or -1
+  std::string note;           // the builder's account (ObjectContext::note), may be empty
 };
 
 struct Scene {

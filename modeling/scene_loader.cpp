@@ -288,7 +288,7 @@ void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::m
   if (auto c = o.get("clip")) clip = readClip(*c);
 
   const std::size_t exactBefore = scene.exact_surfaces.size();
-  ObjectContext ctx{scene, directory, material, solid, has_material};
+  ObjectContext ctx{scene, directory, material, solid, has_material, {}};
   std::vector<Primitive> prims;
   try {
     prims = (*builder)(o, ctx);
@@ -304,6 +304,7 @@ void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::m
   so.first = scene.primitives.size();
   so.count = prims.size();
   so.material = material;
+  so.note = ctx.note;
   if (scene.exact_surfaces.size() > exactBefore) {
     // The builder gave the object's true surface (exact_surface.h): place and clip it like the pieces.
     so.exact_surface = int(scene.exact_surfaces.size()) - 1;

@@ -2,436 +2,556 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
-#include <set>
 #include <stdexcept>
-#include <type_traits>
 
-#include "modeling/bb_tetra.h"
+#include "modeling/bb_quadric.h"
+#include "modeling/convex_polyhedron.h"
 
 namespace qacc {
 namespace {
 
 using Vec = Eigen::Vector3d;
 
-const Vec kTie(1.0, 0.3183098861837907, 0.1234567891234567);
+Eigen::Vector4d unitPlane(const Eigen::Vector4d& p) { return p / p.head<3>().norm(); }
 
-double det4(const Vec& a, const Vec& b, const Vec& c, const Vec& d) { return (b - a).dot((c - a).cross(d - a)); }
+// The unit plane up to orientation: its largest normal component (the first of near-ties)
+// made positive.
+Eigen::Vector4d orientationFree(Eigen::Vector4d u) {
+  int m = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::fabs(u[a]) > std::fabs(u[m]) + 1e-9) m = a;
+  return u[m] < 0 ? Eigen::Vector4d(-u) : u;
+}
 
-struct Affine {
-  Vec a;
-  double b;
-  double at(const Vec& u) const { return a.dot(u) + b; }
-};
-
-void barycentricForms(const Vec p[4], Affine l[4]) {
-  Eigen::Matrix3d E;
-  E.col(0) = p[1] - p[0];
-  E.col(1) = p[2] - p[0];
-  E.col(2) = p[3] - p[0];
-  const Eigen::Matrix3d Ei = E.inverse();
-  const Vec off = -(Ei * p[0]);
-  l[0].a = Vec::Zero();
-  l[0].b = 1.0;
-  for (int j = 1; j <= 3; ++j) {
-    l[j].a = Ei.row(j - 1).transpose();
-    l[j].b = off[j - 1];
-    l[0].a -= l[j].a;
-    l[0].b -= l[j].b;
+// 1 or -1 when all values have that strict sign, else 0; values within 1e-12 of the largest
+// count as zero (a rounded zero must not decide).
+int strictSign(const double* v, int n) {
+  double big = 0;
+  for (int i = 0; i < n; ++i) big = std::max(big, std::fabs(v[i]));
+  bool pos = true, neg = true;
+  for (int i = 0; i < n; ++i) {
+    pos = pos && v[i] > 1e-12 * big;
+    neg = neg && v[i] < -1e-12 * big;
   }
+  return pos ? 1 : neg ? -1 : 0;
 }
 
-double scaleOf(const std::vector<Vec>& V) {
-  double s = 0;
-  for (const Vec& v : V)
-    for (const Vec& w : V) s = std::max(s, (v - w).cwiseAbs().maxCoeff());
-  return s;
+// Sign of f's 10 BB coefficients on t (bb_quadric.h), as strictSign.
+int strictSign(const Quadric& f, const Tetrahedron& t) {
+  const Eigen::Matrix4d C = BBQuadric::fromQuadric(f, t).C;
+  double v[10];
+  int k = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a; b < 4; ++b) v[k++] = C(a, b);
+  return strictSign(v, 10);
 }
 
-struct PolyT : Polynomial3 {
-  PolyT(double c) : Polynomial3(Polynomial3::constant(c)) {}  // NOLINT
-  PolyT(const Polynomial3& p) : Polynomial3(p) {}            // NOLINT
-};
-
-template <class T>
-T simplexM(const std::vector<Vec>& V, const Vec& u, double scale) {
-  if (V.size() < 4) return T(0.0);
-  double best = 0;
-  int bi[4] = {-1, -1, -1, -1};
-  const int m = int(V.size());
-  for (int i = 0; i < m; ++i)
-    for (int j = i + 1; j < m; ++j)
-      for (int k = j + 1; k < m; ++k)
-        for (int l = k + 1; l < m; ++l) {
-          const double d = std::fabs(det4(V[std::size_t(i)], V[std::size_t(j)], V[std::size_t(k)], V[std::size_t(l)]));
-          if (d > best) {
-            best = d;
-            bi[0] = i, bi[1] = j, bi[2] = k, bi[3] = l;
-          }
-        }
-  if (bi[0] < 0 || best <= 1e-12 * scale * scale * scale) return T(0.0);
-  const Vec p[4] = {V[std::size_t(bi[0])], V[std::size_t(bi[1])], V[std::size_t(bi[2])], V[std::size_t(bi[3])]};
-  Affine l[4];
-  barycentricForms(p, l);
-  if (V.size() == 4) {
-    for (int j = 0; j < 4; ++j) {
-      const double v = l[j].at(u);
-      if (v > 0 || (v == 0 && l[j].a.dot(kTie) > 0)) continue;
-      return T(0.0);
-    }
-    return T(1.0 / best);
-  }
-  T sum(0.0);
-  for (int q = 0; q < 4; ++q) {
-    std::vector<Vec> W;
-    for (int s = 0; s < m; ++s)
-      if (s != bi[q]) W.push_back(V[std::size_t(s)]);
-    const T sub = simplexM<T>(W, u, scale);
-    if constexpr (std::is_same<T, double>::value)
-      sum += l[q].at(u) * sub;
-    else
-      sum = sum + Polynomial3::affine(l[q].a, l[q].b) * sub;
-  }
-  return sum;
-}
-
-// Canonical plane through three points (sorted), as (n, -n·p0).
-Eigen::Vector4d canonicalPlane(Vec a, Vec b, Vec c) {
-  auto less = [](const Vec& u, const Vec& v) {
-    return u.x() < v.x() || (u.x() == v.x() && (u.y() < v.y() || (u.y() == v.y() && u.z() < v.z())));
-  };
-  Vec s[3] = {a, b, c};
-  std::sort(s, s + 3, less);
-  const Vec n = (s[1] - s[0]).cross(s[2] - s[0]);
-  return Eigen::Vector4d(n.x(), n.y(), n.z(), -n.dot(s[0]));
-}
-
-// Vertices of the convex polyhedron ∩ half-spaces (all triples of planes).
-std::vector<Vec> corners(const std::vector<HalfSpace>& hs, double eps) {
-  std::vector<Vec> out;
-  const std::size_t m = hs.size();
-  for (std::size_t i = 0; i < m; ++i)
-    for (std::size_t j = i + 1; j < m; ++j)
-      for (std::size_t k = j + 1; k < m; ++k) {
-        Eigen::Matrix3d A;
-        A.row(0) = hs[i].p.head<3>().transpose();
-        A.row(1) = hs[j].p.head<3>().transpose();
-        A.row(2) = hs[k].p.head<3>().transpose();
-        const double d = A.determinant();
-        if (std::fabs(d) <= 1e-14 * A.rowwise().norm().prod()) continue;
-        const Vec x = A.partialPivLu().solve(-Vec(hs[i].p.w(), hs[j].p.w(), hs[k].p.w()));
-        bool in = true;
-        for (const HalfSpace& h : hs) in = in && h.eval(x) <= eps * h.p.head<3>().norm();
-        if (!in) continue;
-        bool dup = false;
-        for (const Vec& y : out) dup = dup || (y - x).norm() <= 1e3 * eps;
-        if (!dup) out.push_back(x);
-      }
-  return out;
-}
-
-// Corners of cell ∩ {h <= 0} (keep = true) or cell ∩ {h >= 0}, from the parent's corners:
-// the parent corners on that side plus the vertices on the new plane.
-std::vector<Vec> childCorners(const std::vector<HalfSpace>& hs, const std::vector<Vec>& parent, const HalfSpace& h,
-                              double eps) {
-  std::vector<Vec> out;
-  const double hn = h.p.head<3>().norm();
-  for (const Vec& v : parent)
-    if (h.eval(v) <= eps * hn) out.push_back(v);
-  const std::size_t m = hs.size();
-  for (std::size_t i = 0; i < m; ++i)
-    for (std::size_t j = i + 1; j < m; ++j) {
-      Eigen::Matrix3d A;
-      A.row(0) = h.p.head<3>().transpose();
-      A.row(1) = hs[i].p.head<3>().transpose();
-      A.row(2) = hs[j].p.head<3>().transpose();
-      const double d = A.determinant();
-      if (std::fabs(d) <= 1e-14 * A.rowwise().norm().prod()) continue;
-      const Vec x = A.partialPivLu().solve(-Vec(h.p.w(), hs[i].p.w(), hs[j].p.w()));
-      bool in = true;
-      for (const HalfSpace& g : hs) in = in && g.eval(x) <= eps * g.p.head<3>().norm();
-      if (!in) continue;
-      bool dup = false;
-      for (const Vec& y : out) dup = dup || (y - x).norm() <= 1e3 * eps;
-      if (!dup) out.push_back(x);
-    }
-  return out;
-}
-
-// A cell with volume: its corners are not all on one plane.
-bool solid3(const std::vector<Vec>& c, double eps) {
-  if (c.size() < 4) return false;
+// Bounds of f over the convex hull of `points`, about their centroid m: the affine part is
+// exact at the points; of (x - m)ᵀ A (x - m), the part on A's positive eigenvectors is
+// convex (>= 0, largest at a point), the rest concave (<= 0, smallest at a point). With
+// rough = true the quadratic part is bounded by ±|A|_F ρ² instead (ρ: largest |x - m|).
+void bounds(const Quadric& f, const std::vector<ConvexPolyhedron::Vertex>& points, double& lo, double& hi,
+            bool rough = false) {
   Vec m = Vec::Zero();
-  for (const Vec& v : c) m += v / double(c.size());
-  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
-  for (const Vec& v : c) C += (v - m) * (v - m).transpose();
-  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(C).eigenvalues()[0] > 1e4 * eps * eps;
+  for (const auto& v : points) m += v.x;
+  m /= double(points.size());
+  const double fm = f.eval(m);
+  const Vec grad = f.gradient(m);
+  double rho2 = 0;
+  lo = hi = fm;
+  for (const auto& v : points) {
+    const double l = fm + grad.dot(v.x - m);
+    lo = std::min(lo, l);
+    hi = std::max(hi, l);
+    rho2 = std::max(rho2, (v.x - m).squaredNorm());
+  }
+  const Eigen::Matrix3d A = f.Q.topLeftCorner<3, 3>();
+  const double norm = A.norm();
+  if (rough) {
+    lo -= norm * rho2;
+    hi += norm * rho2;
+    return;
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+  es.computeDirect(A);
+  double qpos = 0, qneg = 0;
+  for (const auto& v : points) {
+    const Vec d = es.eigenvectors().transpose() * (v.x - m);
+    double p = 0, n = 0;
+    for (int i = 0; i < 3; ++i) (es.eigenvalues()[i] > 0 ? p : n) += es.eigenvalues()[i] * d[i] * d[i];
+    qpos = std::max(qpos, p);
+    qneg = std::min(qneg, n);
+  }
+  const double slack = 1e-12 * norm * rho2;  // eigen-decomposition error
+  lo += qneg - slack;
+  hi += qpos + slack;
 }
 
-// Does the triangle (a, b, c) cross the interior of the convex cell?
-bool triangleCrosses(const std::vector<HalfSpace>& hs, const Vec& a, const Vec& b, const Vec& c, double eps) {
-  std::vector<Vec> poly = {a, b, c};
-  for (const HalfSpace& h : hs) {
-    std::vector<Vec> next;
-    const double hn = h.p.head<3>().norm();
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-      const Vec& p = poly[i];
-      const Vec& q = poly[(i + 1) % poly.size()];
-      const double vp = h.eval(p) / hn, vq = h.eval(q) / hn;
-      const bool ip = vp <= -eps, iq = vq <= -eps;  // strictly inside, with a margin
-      if (ip) next.push_back(p);
-      if (ip != iq) {
-        const double t = (vp + eps) / (vp - vq);
-        next.push_back(p + (q - p) * std::min(1.0, std::max(0.0, t)));
+// w Π f_i for n <= 2 affine forms f_i(x) = a_i·x + b_i, as a quadric.
+template <class Affine>
+Quadric productOf(const Affine* f, int n, double w) {
+  const Eigen::Vector4d one(0, 0, 0, 1);
+  const Eigen::Vector4d u = n > 0 ? Eigen::Vector4d(f[0].a.x(), f[0].a.y(), f[0].a.z(), f[0].b) : one;
+  const Eigen::Vector4d v = n > 1 ? Eigen::Vector4d(f[1].a.x(), f[1].a.y(), f[1].a.z(), f[1].b) : one;
+  return Quadric(Eigen::Matrix4d(w * u * v.transpose()));  // symmetrised
+}
+
+// Can f vanish in the cell? Not when its values at the corners have one strict sign and its
+// BB coefficients have that sign on the parent tetrahedron or on every tetrahedron of a fan
+// covering the cell (convex hull property).
+bool mayVanish(const Quadric& f, const ConvexPolyhedron& cell, const Tetrahedron& parent,
+               const std::vector<Eigen::Vector4d>& unit) {
+  std::vector<double> corner;
+  for (const auto& v : cell.vertices()) corner.push_back(f.eval(v.x));
+  const int sign = strictSign(corner.data(), int(corner.size()));
+  if (sign == 0) return true;
+  if (strictSign(f, parent) == sign) return false;
+  for (const auto& t : cell.fan(unit))
+    if (strictSign(f, t) != sign) return true;
+  return false;
+}
+
+// The planes of a tetrahedron's cells: coefficients as emitted and unit-normal copies for
+// distances.
+struct PlaneTable {
+  std::vector<Eigen::Vector4d> coef, unit;
+  int add(const Eigen::Vector4d& p) {
+    coef.push_back(p);
+    unit.push_back(unitPlane(p));
+    return int(coef.size()) - 1;
+  }
+};
+
+// A cutting plane and the knot triangles on it.
+struct PlaneGroup {
+  int id = 0;       // in the plane table
+  double area = 0;  // of its largest triangle
+  std::vector<std::array<Vec, 3>> triangles;
+  Eigen::AlignedBox3d box;  // of its triangles
+};
+
+// The (canonical) planes of the knot triangles that cross `start`, coinciding planes
+// (within 1e-11 relative) merged, largest triangle first.
+std::vector<PlaneGroup> cuttingPlanes(const std::vector<std::array<Vec, 3>>& triangles, const ConvexPolyhedron& start,
+                                      PlaneTable& planes, double eps) {
+  const Eigen::AlignedBox3d startBox = start.box();
+  const double scale = startBox.diagonal().norm();
+  struct Candidate {
+    std::array<Vec, 3> p;
+    Eigen::Vector4d plane, key;
+    double area;
+  };
+  std::vector<Candidate> cand;
+  for (const auto& p : triangles) {
+    Candidate c{p, {}, {}, 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm()};
+    if (c.area <= eps * scale) continue;  // collinear or coincident knots
+    Eigen::AlignedBox3d tb;
+    for (const Vec& v : p) tb.extend(v);
+    if (!tb.intersects(startBox)) continue;
+    c.plane = canonicalPlane(p[0], p[1], p[2]);
+    bool neg, pos;
+    start.sides(unitPlane(c.plane), eps, neg, pos);
+    if (!neg || !pos || !start.crossedBy(p[0], p[1], p[2], planes.unit, eps)) continue;
+    c.key = orientationFree(unitPlane(c.plane));
+    cand.push_back(std::move(c));
+  }
+  std::vector<std::size_t> byKey(cand.size());
+  for (std::size_t i = 0; i < cand.size(); ++i) byKey[i] = i;
+  std::sort(byKey.begin(), byKey.end(), [&](std::size_t a, std::size_t b) {
+    return cand[a].key.x() < cand[b].key.x() || (cand[a].key.x() == cand[b].key.x() && a < b);
+  });
+  const double tol = 1e-11;
+  std::vector<bool> taken(cand.size(), false);
+  std::vector<PlaneGroup> groups;
+  for (std::size_t u = 0; u < byKey.size(); ++u) {
+    const std::size_t i = byKey[u];
+    if (taken[i]) continue;
+    std::vector<std::size_t> members = {i};
+    for (std::size_t w = u + 1; w < byKey.size() && cand[byKey[w]].key.x() - cand[i].key.x() <= tol; ++w) {
+      const std::size_t j = byKey[w];
+      const Eigen::Vector4d d = cand[j].key - cand[i].key;
+      if (!taken[j] && d.head<3>().cwiseAbs().maxCoeff() <= tol && std::fabs(d.w()) <= tol * scale) members.push_back(j);
+    }
+    std::sort(members.begin(), members.end());
+    PlaneGroup g;
+    g.id = planes.add(cand[members[0]].plane);  // the member first in triangle order
+    for (std::size_t j : members) {
+      taken[j] = true;
+      g.area = std::max(g.area, cand[j].area);
+      g.triangles.push_back(cand[j].p);
+      for (const Vec& v : cand[j].p) g.box.extend(v);
+    }
+    groups.push_back(std::move(g));
+  }
+  std::stable_sort(groups.begin(), groups.end(), [](const PlaneGroup& a, const PlaneGroup& b) { return a.area > b.area; });
+  return groups;
+}
+
+// F near one tetrahedron, as a sum over the leaves of the compiled basis functions:
+// F(u) = Σ_k c_k N_k(u), N_k(u) = Σ_{leaves L of k} 1_L(u) w_L Π λ(u). Leaves of several
+// basis functions share knot simplices (about 4 leaves per simplex), so the sum is kept per
+// distinct simplex S: F = Σ_S 1_S(u) T_S(u), T_S = Σ_{leaves on S} c w Π λ, a quadric. A
+// region of the tetrahedron carries a State: the sum of the T_S of the simplices that
+// contain it and the list of those it straddles (the ones it misses are forgotten).
+// classify() refines a child's State from its parent's and bounds F on the region:
+//   F ∈ range(contained sum) + Σ over straddled S of [min(0, T_S), max(0, T_S)],
+// ranges over the region taken from its corners (bounds above), those of T_S also
+// intersected with T_S's range on S (its extreme BB coefficients there).
+class LocalField {
+ public:
+  struct Straddled {
+    std::uint32_t simplex;
+    std::uint8_t faces;  // bit j: the region has corners on both sides of face j
+  };
+  struct State {
+    Quadric all;                     // Σ T_S over the contained S
+    std::vector<Straddled> partial;  // straddled simplices
+  };
+
+  LocalField(const SimplexSpline3& s, const std::vector<std::size_t>& near) {
+    const auto& B = s.basisFunctions();
+    const int n = s.degree();
+    struct Item {
+      std::array<int, 4> key;
+      std::size_t basis, leaf;
+    };
+    std::vector<Item> items;
+    for (std::size_t i : near) {
+      if (s.coefficientOf(B[i]) == 0.0) continue;
+      for (std::size_t l = 0; l < B[i].leaves.size(); ++l) {
+        Item it{B[i].leaves[l].knots, i, l};
+        std::sort(it.key.begin(), it.key.end());
+        items.push_back(it);
       }
     }
-    poly.swap(next);
-    if (poly.size() < 3) return false;
+    std::stable_sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.key < b.key; });
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      const auto& L = B[items[i].basis].leaves[items[i].leaf];
+      if (i == 0 || items[i].key != items[i - 1].key) {
+        Simplex S;
+        S.leaf = &L;
+        S.knots = items[i].key;
+        for (int j = 0; j < 4; ++j) {
+          const auto& f = L.bary[std::size_t(j)];
+          S.bary[std::size_t(j)] = Eigen::Vector4d(f.a.x(), f.a.y(), f.a.z(), f.b);
+        }
+        for (int id : S.knots) S.box.extend(s.knotById(id));
+        simplices_.push_back(S);
+      }
+      const double c = s.coefficientOf(B[items[i].basis]);
+      simplices_.back().term.Q += productOf(&B[items[i].basis].factors[items[i].leaf * std::size_t(n)], n, c * L.weight).Q;
+    }
+    // T_S over S lies between its extreme BB coefficients there (convex hull property).
+    for (Simplex& S : simplices_) {
+      Tetrahedron t;
+      for (int a = 0; a < 4; ++a) t[std::size_t(a)] = s.knotById(S.knots[std::size_t(a)]);
+      const Eigen::Matrix4d C = BBQuadric::fromQuadric(S.term, t).C;
+      S.lo = S.hi = C(0, 0);
+      for (int a = 0; a < 4; ++a)
+        for (int b = a; b < 4; ++b) {
+          S.lo = std::min(S.lo, C(a, b));
+          S.hi = std::max(S.hi, C(a, b));
+        }
+    }
   }
-  double area = 0;
-  for (std::size_t i = 1; i + 1 < poly.size(); ++i) area += (poly[i] - poly[0]).cross(poly[i + 1] - poly[0]).norm();
-  return area > 1e3 * eps * eps;
-}
+
+  const std::array<int, 4>& knots(std::uint32_t simplex) const { return simplices_[simplex].knots; }
+
+  State root() const {
+    State st;
+    for (std::uint32_t l = 0; l < simplices_.size(); ++l) st.partial.push_back(Straddled{l, 0xF});
+    return st;
+  }
+
+  // Refines st against `region`; lo, hi bound F on it.
+  void classify(const ConvexPolyhedron& region, State& st, double& lo, double& hi) const {
+    const auto& V = region.vertices();
+    const std::size_t nv = V.size();
+    const Eigen::AlignedBox3d box = region.box();
+    const double tau = 1e-11;  // on barycentric coordinates
+    double slo = 0, shi = 0;
+    std::size_t keep = 0;
+    for (std::size_t q = 0; q < st.partial.size(); ++q) {
+      Straddled& p = st.partial[q];
+      const Simplex& S = simplices_[p.simplex];
+      if (!S.box.intersects(box)) continue;
+      // Out: all corners beyond one face; in: all corners inside every face. A face the
+      // parent region lay inside of is not looked at again.
+      bool out = false;
+      for (int j = 0; j < 4 && !out; ++j) {
+        if (!(p.faces & (1u << j))) continue;
+        const Eigen::Vector4d& f = S.bary[std::size_t(j)];
+        bool pos = false, neg = false;
+        for (std::size_t v = 0; v < nv && !(pos && neg); ++v) {
+          const double x = f.head<3>().dot(V[v].x) + f.w();
+          pos = pos || x > tau;
+          neg = neg || x < -tau;
+        }
+        out = !pos;
+        if (!neg) p.faces = std::uint8_t(p.faces & ~(1u << j));
+      }
+      if (out) continue;
+      if (p.faces == 0) {
+        st.all.Q += S.term.Q;
+        continue;
+      }
+      double tl, th;  // T_S on region ∩ S
+      bounds(S.term, V, tl, th, true);
+      slo += std::min(0.0, std::max(tl, S.lo));
+      shi += std::max(0.0, std::min(th, S.hi));
+      st.partial[keep++] = p;
+    }
+    st.partial.resize(keep);
+    bounds(st.all, V, lo, hi);
+    lo += slo;
+    hi += shi;
+  }
+
+  // F on a cell: simplices still straddled (only within the tolerances) decide at its centroid.
+  Quadric polynomial(const State& st, const Vec& centre) const {
+    Quadric f = st.all;
+    for (const Straddled& p : st.partial)
+      if (SimplexSpline3::inside(*simplices_[p.simplex].leaf, centre)) f.Q += simplices_[p.simplex].term.Q;
+    return f;
+  }
+
+ private:
+  struct Simplex {
+    const SimplexSpline3::Leaf* leaf;     // one leaf on it (its barycentric forms)
+    std::array<Eigen::Vector4d, 4> bary;  // the same, packed
+    std::array<int, 4> knots;             // sorted
+    Eigen::AlignedBox3d box;
+    Quadric term;           // T_S
+    double lo = 0, hi = 0;  // bounds of T_S on S
+  };
+  std::vector<Simplex> simplices_;
+};
 
 }  // namespace
 
-SimplexSpline3::SimplexSpline3(int degree, std::vector<Vec> vertices, std::vector<std::array<int, 4>> tets,
-                               std::vector<std::vector<Vec>> knots)
-    : n_(degree), verts_(std::move(vertices)), tets_(std::move(tets)), knots_(std::move(knots)) {
-  if (n_ < 0 || n_ > 3) throw std::invalid_argument("SimplexSpline3: degree must be in [0, 3]");
-  if (knots_.size() != verts_.size()) throw std::invalid_argument("SimplexSpline3: one knot cloud per vertex");
-  for (const auto& k : knots_)
-    if (int(k.size()) != n_) throw std::invalid_argument("SimplexSpline3: each knot cloud needs degree extra knots");
-  for (const auto& t : tets_)
-    for (int v : t)
-      if (v < 0 || v >= int(verts_.size())) throw std::invalid_argument("SimplexSpline3: vertex index out of range");
-  coef_.assign(tets_.size(), std::vector<double>(multiIndices(n_).size(), 0.0));
+SimplexSpline3::CellStats& SimplexSpline3::CellStats::operator+=(const CellStats& o) {
+  tets += o.tets;
+  tets_culled += o.tets_culled;
+  regions_culled += o.regions_culled;
+  cells += o.cells;
+  crossed += o.crossed;
+  planes += o.planes;
+  return *this;
 }
 
-std::vector<SimplexSpline3::Beta> SimplexSpline3::multiIndices(int n) {
-  std::vector<Beta> out;
-  for (const auto& m : BBTetra::multiIndices(n)) out.push_back(m);
-  return out;
-}
-
-std::vector<Vec> SimplexSpline3::knotSet(std::size_t t, const Beta& b) const {
-  std::vector<Vec> V;
-  for (int c = 0; c < 4; ++c)
-    for (int k = 0; k <= b[std::size_t(c)]; ++k) V.push_back(knot(tets_[t][std::size_t(c)], k));
-  return V;
-}
-
-std::vector<Vec> SimplexSpline3::lowerSet(std::size_t t, const Beta& b) const {
-  std::vector<Vec> U;
-  for (int c = 0; c < 4; ++c)
-    for (int k = 0; k < b[std::size_t(c)]; ++k) U.push_back(knot(tets_[t][std::size_t(c)], k));
-  return U;
-}
-
-double SimplexSpline3::basis(std::size_t t, const Beta& b, const Vec& u) const {
-  const auto V = knotSet(t, b);
-  const auto& T = tets_[t];
-  const double d = std::fabs(det4(knot(T[0], b[0]), knot(T[1], b[1]), knot(T[2], b[2]), knot(T[3], b[3])));
-  return d * simplexM<double>(V, u, scaleOf(V));
-}
-
-double SimplexSpline3::eval(const Vec& u) const {
-  const auto betas = multiIndices(n_);
-  double s = 0;
-  for (std::size_t t = 0; t < tets_.size(); ++t)
-    for (std::size_t k = 0; k < betas.size(); ++k)
-      if (coef_[t][k] != 0.0) s += coef_[t][k] * basis(t, betas[k], u);
-  return s;
-}
-
-Polynomial3 SimplexSpline3::localPolynomial(const Vec& probe) const {
-  const auto betas = multiIndices(n_);
-  Polynomial3 s;
-  for (std::size_t t = 0; t < tets_.size(); ++t)
-    for (std::size_t k = 0; k < betas.size(); ++k) {
-      if (coef_[t][k] == 0.0) continue;
-      const auto V = knotSet(t, betas[k]);
-      const auto& T = tets_[t];
-      const auto& b = betas[k];
-      const double d = std::fabs(det4(knot(T[0], b[0]), knot(T[1], b[1]), knot(T[2], b[2]), knot(T[3], b[3])));
-      const PolyT m = simplexM<PolyT>(V, probe, scaleOf(V));
-      s = s + static_cast<const Polynomial3&>(m) * (coef_[t][k] * d);
-    }
-  return s;
-}
-
-std::vector<std::vector<double>> SimplexSpline3::grevilleCoefficients(const Polynomial3& h) const {
-  const auto betas = multiIndices(n_);
-  std::vector<std::vector<double>> out(tets_.size(), std::vector<double>(betas.size()));
-  for (std::size_t t = 0; t < tets_.size(); ++t)
-    for (std::size_t k = 0; k < betas.size(); ++k) {
-      const auto U = lowerSet(t, betas[k]);
-      Vec xi = Vec::Zero();
-      if (U.empty()) {
-        for (int v : tets_[t]) xi += verts_[std::size_t(v)] / 4.0;
-      } else {
-        for (const Vec& q : U) xi += q / double(U.size());
-      }
-      out[t][k] = h.eval(xi);
-    }
-  return out;
-}
-
-std::vector<SimplexSpline3::Cell> SimplexSpline3::cells() const {
-  double scale = 0;
-  for (const Vec& v : verts_)
-    for (const Vec& w : verts_) scale = std::max(scale, (v - w).norm());
-  const double eps = 1e-10 * scale;
-  const auto betas = multiIndices(n_);
-  // Knot triangles (three distinct, non-collinear knots of one knot set).
-  std::set<std::array<double, 9>> tris;
-  for (std::size_t t = 0; t < tets_.size(); ++t)
-    for (const auto& b : betas) {
-      const auto V = knotSet(t, b);
-      for (std::size_t i = 0; i < V.size(); ++i)
-        for (std::size_t j = i + 1; j < V.size(); ++j)
-          for (std::size_t k = j + 1; k < V.size(); ++k) {
-            if ((V[j] - V[i]).cross(V[k] - V[i]).norm() <= eps * scale) continue;
-            Vec s[3] = {V[i], V[j], V[k]};
-            std::sort(s, s + 3, [](const Vec& u, const Vec& v) {
-              return u.x() < v.x() || (u.x() == v.x() && (u.y() < v.y() || (u.y() == v.y() && u.z() < v.z())));
-            });
-            tris.insert({s[0].x(), s[0].y(), s[0].z(), s[1].x(), s[1].y(), s[1].z(), s[2].x(), s[2].y(), s[2].z()});
-          }
-    }
+std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bool cull, double eps,
+                                                               CellStats& stats) const {
   std::vector<Cell> out;
-  for (std::size_t t = 0; t < tets_.size(); ++t) {
-    const auto& T = tets_[t];
-    std::vector<HalfSpace> start;
-    Vec centre = Vec::Zero();
-    for (int v : T) centre += verts_[std::size_t(v)] / 4.0;
-    for (int a = 0; a < 4; ++a) {
-      const Eigen::Vector4d h = canonicalPlane(verts_[std::size_t(T[std::size_t((a + 1) % 4)])],
-                                               verts_[std::size_t(T[std::size_t((a + 2) % 4)])],
-                                               verts_[std::size_t(T[std::size_t((a + 3) % 4)])]);
-      start.push_back(h.head<3>().dot(centre) + h.w() < 0 ? HalfSpace(h) : HalfSpace(h).opposite());
+  const auto& T = simplices_[t];
+  Tetrahedron tet;
+  for (int a = 0; a < 4; ++a) tet[std::size_t(a)] = verts_[std::size_t(T[std::size_t(a)])];
+  PlaneTable planes;
+  std::array<int, 4> faceId;
+  for (int a = 0; a < 4; ++a)  // a face shared with a neighbour gets the opposite half-space there
+    faceId[std::size_t(a)] = planes.add(facePlane(tet[std::size_t((a + 1) % 4)], tet[std::size_t((a + 2) % 4)],
+                                                  tet[std::size_t((a + 3) % 4)], tet[std::size_t(a)]).p);
+  ConvexPolyhedron start = ConvexPolyhedron::tetrahedron(tet, faceId, {false, false, false, false});
+  if (!domain_.isEmpty())
+    for (int axis = 0; axis < 3 && !start.empty(); ++axis) {
+      Eigen::Vector4d lo = Eigen::Vector4d::Zero(), hi = Eigen::Vector4d::Zero();
+      lo[axis] = -1;
+      lo[3] = domain_.min()[axis];
+      hi[axis] = 1;
+      hi[3] = -domain_.max()[axis];
+      start = start.clipped(planes.add(lo), false, planes.unit, eps);
+      if (!start.empty()) start = start.clipped(planes.add(hi), false, planes.unit, eps);
     }
-    if (!domain_.isEmpty())
-      for (int axis = 0; axis < 3; ++axis) {
-        Eigen::Vector4d lo = Eigen::Vector4d::Zero(), hi = Eigen::Vector4d::Zero();
-        lo[axis] = -1;
-        lo[3] = domain_.min()[axis];
-        hi[axis] = 1;
-        hi[3] = -domain_.max()[axis];
-        start.push_back(HalfSpace(lo));
-        start.push_back(HalfSpace(hi));
+  if (start.empty()) return out;
+  ++stats.tets;
+
+  // Basis functions whose support box overlaps the region with volume (all those not zero
+  // in its interior): when none changes sign, F does not either.
+  const Eigen::AlignedBox3d startBox = start.box();
+  std::vector<std::size_t> near;
+  for (std::size_t i : basisNear(startBox)) {
+    const Eigen::AlignedBox3d overlap = basisFunctions()[i].support.intersection(startBox);
+    if ((overlap.sizes().array() > eps).all()) near.push_back(i);
+  }
+  if (cull) {
+    bool pos = !near.empty(), neg = !near.empty();
+    for (std::size_t i : near) {
+      pos = pos && coefficientOf(basisFunctions()[i]) > 0;
+      neg = neg && coefficientOf(basisFunctions()[i]) < 0;
+    }
+    if (pos || neg) {
+      ++stats.tets_culled;
+      ++stats.regions_culled;
+      return out;
+    }
+  }
+  const LocalField field(*this, near);
+  LocalField::State rootState = field.root();
+  double rlo, rhi;
+  field.classify(start, rootState, rlo, rhi);
+
+  // Cuts: the faces of the straddled simplices (F is one polynomial between them), each once.
+  std::vector<std::array<int, 3>> triples;
+  for (const auto& p : rootState.partial) {
+    const auto& k = field.knots(p.simplex);  // sorted
+    triples.push_back({k[1], k[2], k[3]});
+    triples.push_back({k[0], k[2], k[3]});
+    triples.push_back({k[0], k[1], k[3]});
+    triples.push_back({k[0], k[1], k[2]});
+  }
+  std::sort(triples.begin(), triples.end());
+  triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
+  std::vector<std::array<Vec, 3>> triangles;
+  for (const auto& tr : triples) triangles.push_back({knotById(tr[0]), knotById(tr[1]), knotById(tr[2])});
+  const std::vector<PlaneGroup> groups = cuttingPlanes(triangles, start, planes, eps);
+  stats.planes += groups.size();
+
+  // Does a triangle of the group (whose plane is known to cut the region) cross its interior?
+  auto trianglesCross = [&](const PlaneGroup& g, const ConvexPolyhedron& poly, const Eigen::AlignedBox3d& box) {
+    for (const auto& tr : g.triangles) {
+      Eigen::AlignedBox3d tb;
+      for (const Vec& v : tr) tb.extend(v);
+      if (tb.intersects(box) && poly.crossedBy(tr[0], tr[1], tr[2], planes.unit, eps)) return true;
+    }
+    return false;
+  };
+
+  // Recursive cutting, depth first (negative side first): deterministic. A region is cut by
+  // the plane, among the first 16 of its list (largest triangle first) that cut it, that
+  // leaves the most of it on its thinner side and one of whose triangles crosses it
+  // (balanced cuts shrink regions fastest, and their bounds with them). Planes found not to
+  // cut the region, or whose triangles miss it, are dropped for the whole subtree.
+  struct Region {
+    ConvexPolyhedron poly;
+    std::vector<std::uint32_t> planes;  // groups that may still cross it, in order
+    LocalField::State state;
+    bool classified;
+  };
+  std::vector<Region> stack;
+  {
+    Region root{start, {}, std::move(rootState), true};
+    for (std::uint32_t g = 0; g < groups.size(); ++g) root.planes.push_back(g);
+    stack.push_back(std::move(root));
+  }
+  while (!stack.empty()) {
+    Region r = std::move(stack.back());
+    stack.pop_back();
+    double lo = rlo, hi = rhi;
+    if (!r.classified) field.classify(r.poly, r.state, lo, hi);
+    if (r.state.partial.empty()) r.planes.clear();  // one polynomial: no simplex face crosses it
+    if (cull && !r.state.partial.empty()) {
+      const double margin = 1e-12 * (std::fabs(lo) + std::fabs(hi));
+      if (lo > margin || hi < -margin) {
+        ++stats.regions_culled;
+        continue;
       }
-    struct Work {
-      std::vector<HalfSpace> hs;
-      std::vector<Vec> corners;
-    };
-    Work first{start, corners(start, eps)};
-    if (!solid3(first.corners, eps)) continue;
-    std::vector<Work> work = {first};
-    Eigen::AlignedBox3d tb;
-    for (const Vec& c : first.corners) tb.extend(c);
-    for (const auto& s : tris) {
-      const Vec a(s[0], s[1], s[2]), b(s[3], s[4], s[5]), c(s[6], s[7], s[8]);
-      Eigen::AlignedBox3d sb;
-      sb.extend(a);
-      sb.extend(b);
-      sb.extend(c);
-      if (!tb.intersects(sb)) continue;
-      const Eigen::Vector4d h = canonicalPlane(a, b, c);
-      const double hn = h.head<3>().norm();
-      std::vector<Work> next;
-      next.reserve(work.size());
-      for (auto& cell : work) {
-        bool split = false;
-        bool neg = false, pos = false;
-        for (const Vec& v : cell.corners) {
-          const double e = (h.head<3>().dot(v) + h.w()) / hn;
-          neg = neg || e < -eps;
-          pos = pos || e > eps;
-        }
-        if (neg && pos && triangleCrosses(cell.hs, a, b, c, eps)) {
-          const HalfSpace ha(h), hb = HalfSpace(h).opposite();
-          Work A{cell.hs, childCorners(cell.hs, cell.corners, ha, eps)};
-          Work B{cell.hs, childCorners(cell.hs, cell.corners, hb, eps)};
-          A.hs.push_back(ha);
-          B.hs.push_back(hb);
-          if (solid3(A.corners, eps) && solid3(B.corners, eps)) {
-            next.push_back(std::move(A));
-            next.push_back(std::move(B));
-            split = true;
+    }
+    const Eigen::AlignedBox3d box = r.poly.box();
+    std::size_t best = r.planes.size();
+    for (bool more = true; more && best == r.planes.size();) {
+      std::vector<std::pair<double, std::size_t>> cutting;  // (depth, index in r.planes)
+      std::vector<char> drop(r.planes.size(), 0);
+      for (std::size_t k = 0; k < r.planes.size() && cutting.size() < 16; ++k) {
+        const PlaneGroup& g = groups[r.planes[k]];
+        double mn = 0, mx = 0;
+        if (g.box.intersects(box))
+          for (const auto& v : r.poly.vertices()) {
+            const double x = planes.unit[std::size_t(g.id)].head<3>().dot(v.x) + planes.unit[std::size_t(g.id)].w();
+            mn = std::min(mn, x);
+            mx = std::max(mx, x);
           }
+        if (mn < -eps && mx > eps)
+          cutting.emplace_back(std::min(-mn, mx), k);
+        else
+          drop[k] = 1;
+      }
+      more = cutting.size() == 16;  // when all 16 fail, look further down the list
+      std::stable_sort(cutting.begin(), cutting.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+      for (const auto& [depth, k] : cutting) {
+        if (trianglesCross(groups[r.planes[k]], r.poly, box)) {
+          best = k;
+          break;
         }
-        if (!split) next.push_back(std::move(cell));
+        drop[k] = 1;
       }
-      work.swap(next);
-    }
-    for (auto& wc : work) {
-      Cell cell;
-      cell.corners = wc.corners;
-      for (const HalfSpace& h : wc.hs) {
-        int on = 0;
-        for (const Vec& v : cell.corners) on += std::fabs(h.eval(v)) <= 1e3 * eps * h.p.head<3>().norm();
-        if (on >= 3) cell.faces.push_back(h);
+      std::vector<std::uint32_t> kept;
+      std::size_t keptBest = 0;
+      for (std::size_t k = 0; k < r.planes.size(); ++k) {
+        if (k == best) keptBest = kept.size();
+        if (!drop[k]) kept.push_back(r.planes[k]);
       }
-      Vec probe = Vec::Zero();
-      for (const Vec& v : cell.corners) probe += v / double(cell.corners.size());
-      cell.poly = localPolynomial(probe);
-      cell.parent = t;
-      Tetrahedron tet;
-      for (int a = 0; a < 4; ++a) tet[std::size_t(a)] = verts_[std::size_t(T[std::size_t(a)])];
-      BBTetra bb = BBTetra::fromPolynomial(cell.poly, tet);
-      while (bb.degree() < 2) bb = bb.elevated();
-      cell.crossed = bb.strictSign() == 0;
-      out.push_back(std::move(cell));
+      r.planes.swap(kept);
+      if (best < kept.size()) best = keptBest;
+      else best = r.planes.size();
     }
+    if (best < r.planes.size()) {
+      Region a{{}, {}, {}, false}, b{{}, {}, {}, false};
+      if (!r.poly.split(groups[r.planes[best]].id, planes.unit, eps, a.poly, b.poly))
+        throw std::logic_error("SimplexSpline3: a crossing plane did not cut");
+      a.planes = r.planes;
+      a.planes.erase(a.planes.begin() + std::ptrdiff_t(best));
+      b.planes = a.planes;
+      b.state = r.state;
+      a.state = std::move(r.state);
+      stack.push_back(std::move(b));
+      stack.push_back(std::move(a));
+      continue;
+    }
+
+    Cell cell;
+    cell.parent = t;
+    cell.quadric = field.polynomial(r.state, r.poly.centroid());
+    for (const auto& v : r.poly.vertices()) cell.corners.push_back(v.x);
+    for (const auto& face : r.poly.faces()) {
+      const HalfSpace h(planes.coef[std::size_t(face.plane)]);
+      cell.faces.push_back(face.flip ? h.opposite() : h);
+    }
+    cell.crossed = mayVanish(cell.quadric, r.poly, tet, planes.unit);
+    ++stats.cells;
+    stats.crossed += cell.crossed;
+    if (cell.crossed || !cull) out.push_back(std::move(cell));
   }
   return out;
 }
 
-std::vector<Primitive> SimplexSpline3::toPrimitives(int material, int object) const {
+std::vector<SimplexSpline3::Cell> SimplexSpline3::decompose(bool cull, CellStats* stats) const {
+  if (n_ > 2) throw std::invalid_argument("SimplexSpline3: cells are made for degree <= 2");
+  Eigen::AlignedBox3d all;
+  for (const Vec& v : verts_) all.extend(v);
+  const double eps = 1e-10 * all.diagonal().norm();
+  const std::size_t n = simplices_.size();
+  std::vector<std::vector<Cell>> per(n);
+  std::vector<CellStats> st(n);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long long t = 0; t < (long long)n; ++t)
+    per[std::size_t(t)] = decomposeTet(std::size_t(t), cull, eps, st[std::size_t(t)]);
+  std::vector<Cell> out;
+  CellStats total;
+  for (std::size_t t = 0; t < n; ++t) {
+    total += st[t];
+    for (Cell& c : per[t]) out.push_back(std::move(c));
+  }
+  if (stats) *stats = total;
+  return out;
+}
+
+std::vector<SimplexSpline3::Cell> SimplexSpline3::cells(CellStats* stats) const { return decompose(false, stats); }
+
+std::vector<SimplexSpline3::Cell> SimplexSpline3::crossedCells(CellStats* stats) const {
+  return decompose(true, stats);
+}
+
+std::vector<Primitive> SimplexSpline3::toPrimitives(int material, int object, CellStats* stats, bool cull) const {
   std::vector<Primitive> out;
-  for (const Cell& c : cells()) {
-    if (!c.crossed) continue;
-    const Polynomial3& p = c.poly;
+  for (Cell& c : decompose(cull, stats)) {
     Primitive prim;
-    prim.quadric = Quadric::fromCoefficients(p.coefficient(2, 0, 0), p.coefficient(0, 2, 0), p.coefficient(0, 0, 2),
-                                             0.5 * p.coefficient(1, 1, 0), 0.5 * p.coefficient(0, 1, 1),
-                                             0.5 * p.coefficient(1, 0, 1), 0.5 * p.coefficient(1, 0, 0),
-                                             0.5 * p.coefficient(0, 1, 0), 0.5 * p.coefficient(0, 0, 1),
-                                             p.coefficient(0, 0, 0));
-    prim.clip = c.faces;
+    prim.quadric = c.quadric;
+    prim.clip = std::move(c.faces);
     prim.material = material;
     prim.object = object;
     out.push_back(std::move(prim));
   }
-  return out;
-}
-
-std::vector<std::vector<Eigen::Vector3d>> knotClouds3(const std::vector<Eigen::Vector3d>& vertices,
-                                                     const std::vector<std::array<int, 4>>& tets, int degree,
-                                                     bool g1, double radius) {
-  std::vector<double> shortest(vertices.size(), std::numeric_limits<double>::infinity());
-  for (const auto& t : tets)
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b) {
-        const double l = (vertices[std::size_t(t[std::size_t(a)])] - vertices[std::size_t(t[std::size_t(b)])]).norm();
-        shortest[std::size_t(t[std::size_t(a)])] = std::min(shortest[std::size_t(t[std::size_t(a)])], l);
-        shortest[std::size_t(t[std::size_t(b)])] = std::min(shortest[std::size_t(t[std::size_t(b)])], l);
-      }
-  std::vector<std::vector<Eigen::Vector3d>> out(vertices.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-    for (int k = 1; k <= degree; ++k) {
-      if (!g1 || !std::isfinite(shortest[i])) {
-        out[i].push_back(vertices[i]);
-        continue;
-      }
-      const double u = std::fmod(0.6180339887498949 * double(i * 7 + std::size_t(k) * 3 + 1), 1.0);
-      const double w = std::fmod(0.7548776662466927 * double(i * 5 + std::size_t(k) * 11 + 2), 1.0);
-      const double z = std::fmod(0.5698402909980532 * double(i * 3 + std::size_t(k) * 13 + 5), 1.0);
-      const double th = 6.283185307179586 * u, ph = std::acos(2 * w - 1);
-      const double r = radius * shortest[i] * (0.55 + 0.45 * z) * (k == 1 ? 1.0 : 0.8);
-      out[i].push_back(vertices[i] + r * Eigen::Vector3d(std::sin(ph) * std::cos(th), std::sin(ph) * std::sin(th), std::cos(ph)));
-    }
   return out;
 }
 

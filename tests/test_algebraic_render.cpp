@@ -9,6 +9,7 @@
 
 #include "modeling/scene_loader.h"
 #include "raster/reference_renderer.h"
+#include "tests/render_checks.h"
 #include "tools/engine.h"
 
 using namespace qacc;
@@ -27,36 +28,6 @@ std::string torus(int level, const std::string& extra) {
   return R"js({"type": "algebraic", "poly": "(x^2+y^2+z^2+R^2-r^2)^2 - 4 R^2 (x^2+y^2)",
              "params": {"R": 1, "r": 0.4}, "box": [[-1.5,-1.5,-0.5],[1.5,1.5,0.5]], "level": )js" +
          std::to_string(level) + extra + "}";
-}
-
-// Background pixels whose 8 neighbours are all covered.
-int pinholes(const FrameBuffer& fb) {
-  int n = 0;
-  for (int y = 1; y + 1 < fb.height; ++y)
-    for (int x = 1; x + 1 < fb.width; ++x) {
-      if (fb.object[std::size_t(y) * fb.width + x] >= 0) continue;
-      bool closed = true;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-          closed = closed && fb.object[std::size_t(y + dy) * fb.width + (x + dx)] >= 0;
-      if (closed) ++n;
-    }
-  return n;
-}
-
-// Background pixels of `test` where `truth` covers the whole (2m+1)^2 neighbourhood.
-int missedInside(const FrameBuffer& truth, const FrameBuffer& test, int m) {
-  int n = 0;
-  for (int y = m; y + m < truth.height; ++y)
-    for (int x = m; x + m < truth.width; ++x) {
-      if (test.object[std::size_t(y) * test.width + x] >= 0) continue;
-      bool inside = true;
-      for (int dy = -m; dy <= m; ++dy)
-        for (int dx = -m; dx <= m; ++dx)
-          inside = inside && truth.object[std::size_t(y + dy) * truth.width + (x + dx)] >= 0;
-      if (inside) ++n;
-    }
-  return n;
 }
 
 int covered(const FrameBuffer& fb) {

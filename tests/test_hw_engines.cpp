@@ -37,7 +37,7 @@ Scene loneSphereScene(int w, int h) {
   s.lights = Scene::defaultLights(s.camera);
   s.materials.emplace_back();
   s.primitives.push_back(makeSphere({0, 0, 0}, 1.0));
-  s.objects.push_back({"sphere", 0, 1, 0, -1});
+  s.objects.push_back({"sphere", 0, 1, 0, -1, {}});
   return s;
 }
 

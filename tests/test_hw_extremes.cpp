@@ -28,7 +28,7 @@ Scene makeScene(int w, int h, const Camera& cam, const std::vector<Primitive>& p
     p.object = int(i);
     p.material = 0;
     s.primitives.push_back(p);
-    s.objects.push_back({"quadric", i, 1, 0, -1});
+    s.objects.push_back({"quadric", i, 1, 0, -1, {}});
   }
   return s;
 }

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <queue>
 
 #include "modeling/macropatch.h"
 #include "modeling/scene_loader.h"
 #include "raster/reference_renderer.h"
+#include "tests/render_checks.h"
 #include "tools/engine.h"
 
 using namespace qacc;
@@ -45,50 +45,6 @@ std::vector<ControlNet> irregularOctahedron() {
 
 double gradAngleDeg(const Vector3d& a, const Vector3d& b) {
   return std::atan2(a.normalized().cross(b.normalized()).norm(), a.normalized().dot(b.normalized())) * 180 / M_PI;
-}
-
-// Background pixels not connected to the image border (holes inside the projected surface).
-int enclosedBackgroundPixels(const FrameBuffer& fb) {
-  std::vector<char> seen(fb.pixels(), 0);
-  std::queue<int> q;
-  auto push = [&](int x, int y) {
-    if (x < 0 || y < 0 || x >= fb.width || y >= fb.height) return;
-    const int i = y * fb.width + x;
-    if (seen[std::size_t(i)] || fb.object[std::size_t(i)] >= 0) return;
-    seen[std::size_t(i)] = 1;
-    q.push(i);
-  };
-  for (int x = 0; x < fb.width; ++x) push(x, 0), push(x, fb.height - 1);
-  for (int y = 0; y < fb.height; ++y) push(0, y), push(fb.width - 1, y);
-  while (!q.empty()) {
-    const int i = q.front();
-    q.pop();
-    const int x = i % fb.width, y = i / fb.width;
-    push(x + 1, y), push(x - 1, y), push(x, y + 1), push(x, y - 1);
-  }
-  int holes = 0;
-  for (std::size_t i = 0; i < fb.pixels(); ++i)
-    if (fb.object[i] < 0 && !seen[i]) ++holes;
-  return holes;
-}
-
-// Pixels whose visible point is on the inside of the closed surface (the outward gradient
-// faces away from the viewer): through a crack or pinhole one sees the back of the surface
-// from inside. Grazing points (|cos| < 0.05) are not counted.
-int insideViews(const Scene& s, const FrameBuffer& fb) {
-  const Eigen::Matrix4d Minv = s.camera.worldToWindow(fb.width, fb.height).inverse();
-  int n = 0;
-  for (int y = 0; y < fb.height; ++y)
-    for (int x = 0; x < fb.width; ++x) {
-      const std::size_t i = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
-      if (fb.primitive[i] < 0) continue;
-      const Eigen::Vector4d X = Minv * Eigen::Vector4d(x + 0.5, y + 0.5, fb.depth[i], 1.0);
-      const Vector3d p = X.head<3>() / X.w();
-      const Vector3d g = s.primitives[std::size_t(fb.primitive[i])].quadric.gradient(p);
-      const Vector3d v = s.camera.toViewer(p);
-      if (g.dot(v) < -0.05 * g.norm() * v.norm()) ++n;
-    }
-  return n;
 }
 
 std::string sceneText(const std::string& model, int w) {

@@ -8,9 +8,8 @@
 #include "modeling/revolution.h"
 #include "modeling/scene_loader.h"
 #include "raster/reference_renderer.h"
+#include "tests/render_checks.h"
 #include "tools/engine.h"
-
-#include <queue>
 
 using namespace qacc;
 using Eigen::Vector3d;
@@ -156,53 +155,16 @@ TEST(Revolution, SceneObject) {
   }
 }
 
-namespace {
-// Background pixels not connected to the image border: holes inside the projected object.
-int enclosedBackground(const FrameBuffer& fb) {
-  std::vector<char> seen(fb.pixels(), 0);
-  std::queue<int> q;
-  auto push = [&](int x, int y) {
-    if (x < 0 || y < 0 || x >= fb.width || y >= fb.height) return;
-    const std::size_t i = std::size_t(y * fb.width + x);
-    if (seen[i] || fb.object[i] >= 0) return;
-    seen[i] = 1;
-    q.push(int(i));
-  };
-  for (int x = 0; x < fb.width; ++x) push(x, 0), push(x, fb.height - 1);
-  for (int y = 0; y < fb.height; ++y) push(0, y), push(fb.width - 1, y);
-  while (!q.empty()) {
-    const int i = q.front();
-    q.pop();
-    push(i % fb.width + 1, i / fb.width), push(i % fb.width - 1, i / fb.width);
-    push(i % fb.width, i / fb.width + 1), push(i % fb.width, i / fb.width - 1);
-  }
-  int holes = 0;
-  for (std::size_t i = 0; i < fb.pixels(); ++i) holes += (fb.object[i] < 0 && !seen[i]) ? 1 : 0;
-  return holes;
-}
-}  // namespace
-
 // Pixels showing the inside of the vase (outward gradient facing away from the viewer)
 // although the ray does not come in through the top opening (z = ztop, r < rtop): seen
 // through a crack.
 int insideViewsThroughWalls(const Scene& s, const FrameBuffer& fb, double ztop, double rtop) {
-  const Eigen::Matrix4d Minv = s.camera.worldToWindow(fb.width, fb.height).inverse();
   const Vector3d eye = s.camera.eye;
-  int n = 0;
-  for (int y = 0; y < fb.height; ++y)
-    for (int x = 0; x < fb.width; ++x) {
-      const std::size_t i = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
-      if (fb.primitive[i] < 0) continue;
-      const Eigen::Vector4d X = Minv * Eigen::Vector4d(x + 0.5, y + 0.5, fb.depth[i], 1.0);
-      const Vector3d p = X.head<3>() / X.w();
-      const Vector3d g = s.primitives[std::size_t(fb.primitive[i])].quadric.gradient(p);
-      const Vector3d v = s.camera.toViewer(p);
-      if (!(g.dot(v) < -0.05 * g.norm() * v.norm())) continue;
-      const double t = (ztop - eye.z()) / (p.z() - eye.z());
-      const Vector3d q = eye + t * (p - eye);
-      if (!(t > 0 && t < 1 && q.head<2>().norm() < rtop)) ++n;
-    }
-  return n;
+  return insideViews(s, fb, [&](const Vector3d& p) {
+    const double t = (ztop - eye.z()) / (p.z() - eye.z());
+    const Vector3d q = eye + t * (p - eye);
+    return t > 0 && t < 1 && q.head<2>().norm() < rtop;
+  });
 }
 
 TEST(Revolution, VaseHasNoPinholesAlongItsSlabCircles) {
@@ -215,12 +177,12 @@ TEST(Revolution, VaseHasNoPinholesAlongItsSlabCircles) {
     ASSERT_EQ(s.primitives.size(), 8u);
     const FrameBuffer ref = renderReference(s, 0);
     EXPECT_GT(ref.covered(), 10000u);
-    EXPECT_EQ(enclosedBackground(ref), 0) << name;
+    EXPECT_EQ(enclosedBackgroundPixels(ref), 0) << name;
     EXPECT_EQ(insideViewsThroughWalls(s, ref, 2.88, 0.816), 0) << name;
     EngineOptions eo;
     eo.report_accuracy = false;
     const FrameBuffer hw = runEngine("hw", s, eo).fb;
-    EXPECT_EQ(enclosedBackground(hw), 0) << name << " hw";
+    EXPECT_EQ(enclosedBackgroundPixels(hw), 0) << name << " hw";
     EXPECT_EQ(insideViewsThroughWalls(s, hw, 2.88, 0.816), 0) << name << " hw";
     // Removing a middle slab opens the wall: the check can fail.
     s.primitives.erase(s.primitives.begin() + 3);

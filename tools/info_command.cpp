@@ -24,6 +24,9 @@ void addInfoCommand(CLI::App& app) {
     for (const auto& o : s.objects) objTypes[o.type]++;
     std::printf("objects: %zu\n", s.objects.size());
     for (const auto& [t, n] : objTypes) std::printf("  %-24s %d\n", t.c_str(), n);
+    for (std::size_t i = 0; i < s.objects.size(); ++i)
+      if (!s.objects[i].note.empty())
+        std::printf("  object %zu (%s): %s\n", i, s.objects[i].type.c_str(), s.objects[i].note.c_str());
     std::map<std::string, int> qTypes;
     std::map<std::size_t, int> clipCounts;
     int solid = 0, unbounded = 0;
