@@ -7,8 +7,15 @@ namespace qacc {
 FrameBuffer::FrameBuffer(int w, int h, const std::array<std::uint8_t, 3>& bg)
     : width(w), height(h), color(w, h, 3), depth(std::size_t(w) * h, std::numeric_limits<double>::infinity()),
       object(std::size_t(w) * h, -1), primitive(std::size_t(w) * h, -1) {
-  for (std::size_t i = 0; i < pixels(); ++i)
-    for (int c = 0; c < 3; ++c) color.data[i * 3 + c] = bg[c];
+  // Background colour: one pixel, then the filled prefix doubles (memcpy-speed fill).
+  const std::size_t n = color.data.size();
+  if (n == 0) return;
+  std::copy(bg.begin(), bg.end(), color.data.begin());
+  for (std::size_t done = 3; done < n;) {
+    const std::size_t k = std::min(done, n - done);
+    std::copy_n(color.data.begin(), k, color.data.begin() + std::ptrdiff_t(done));
+    done += k;
+  }
 }
 
 std::size_t FrameBuffer::covered() const {
