@@ -67,7 +67,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   std::vector<std::unique_ptr<Unit>> units;
   units.push_back(std::make_unique<HostInterface>(hs.setups, cfg, hostFifo));
   units.push_back(std::make_unique<SetupUnit>(hs.setups, cfg, hostFifo, setupFifo));
-  units.push_back(std::make_unique<TraversalUnit>(hs.setups, cfg, setupFifo, pixFifo));
+  units.push_back(std::make_unique<TraversalUnit>(hs.setups, trace, setupFifo, pixFifo));
   for (std::size_t p = 0; p < P; ++p)
     units.push_back(std::make_unique<PixelPipelineUnit>("pixel_pipeline_" + std::to_string(p), trace, cfg,
                                                         pixFifo[p], zFifo[p], st.pixels, &zb));

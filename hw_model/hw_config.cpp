@@ -46,6 +46,18 @@ Field intField(int HwConfig::*m, int lo, int hi) {
           [m](const HwConfig& c) { return nlohmann::json(c.*m); }};
 }
 
+// A field holding one of two named values: "first" or "second".
+template <typename E>
+Field choiceField(E HwConfig::*m, const char* first, E a, const char* second, E b) {
+  return {[=](HwConfig& c, const nlohmann::json& j, const std::string& where) {
+            const std::string s = j.is_string() ? j.get<std::string>() : "";
+            if (s == first) c.*m = a;
+            else if (s == second) c.*m = b;
+            else throw std::invalid_argument(where + ": expected \"" + first + "\" or \"" + second + "\"");
+          },
+          [=](const HwConfig& c) { return nlohmann::json(c.*m == a ? first : second); }};
+}
+
 const std::map<std::string, Field>& fields() {
   static const std::map<std::string, Field> f = [] {
     std::map<std::string, Field> m;
@@ -78,25 +90,10 @@ const std::map<std::string, Field>& fields() {
                        }
                      },
                      [](const HwConfig& c) { return nlohmann::json(toString(c.overflow)); }};
-    m["depth_variant"] = {[](HwConfig& c, const nlohmann::json& j, const std::string& w) {
-                            const std::string s = j.is_string() ? j.get<std::string>() : "";
-                            if (s == "stable") c.depth_variant = DepthVariant::Stable;
-                            else if (s == "reciprocal") c.depth_variant = DepthVariant::Reciprocal;
-                            else throw std::invalid_argument(w + ": expected \"stable\" or \"reciprocal\"");
-                          },
-                          [](const HwConfig& c) {
-                            return nlohmann::json(c.depth_variant == DepthVariant::Stable ? "stable" : "reciprocal");
-                          }};
-    m["shading_normalizer"] = {[](HwConfig& c, const nlohmann::json& j, const std::string& w) {
-                                 const std::string s = j.is_string() ? j.get<std::string>() : "";
-                                 if (s == "newton") c.shading_normalizer = Normalizer::Newton;
-                                 else if (s == "recurrence") c.shading_normalizer = Normalizer::Recurrence;
-                                 else throw std::invalid_argument(w + ": expected \"newton\" or \"recurrence\"");
-                               },
-                               [](const HwConfig& c) {
-                                 return nlohmann::json(c.shading_normalizer == Normalizer::Newton ? "newton"
-                                                                                                  : "recurrence");
-                               }};
+    m["depth_variant"] =
+        choiceField(&HwConfig::depth_variant, "stable", DepthVariant::Stable, "reciprocal", DepthVariant::Reciprocal);
+    m["shading_normalizer"] = choiceField(&HwConfig::shading_normalizer, "newton", Normalizer::Newton, "recurrence",
+                                          Normalizer::Recurrence);
     m["bus_width_bits"] = intField(&HwConfig::bus_width_bits, 8, 1024);
     m["bus_cycles_per_word"] = intField(&HwConfig::bus_cycles_per_word, 1, 64);
     m["descriptor_word_bits"] = intField(&HwConfig::descriptor_word_bits, 8, 64);

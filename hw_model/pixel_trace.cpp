@@ -3,7 +3,6 @@
 #include <omp.h>
 
 #include "hw_model/pixel_pipeline.h"
-#include "hw_model/traversal_unit.h"
 
 namespace qacc {
 
@@ -11,6 +10,7 @@ PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const Hw
   PixelTrace tr;
   const int n = int(setups.size());
   tr.prims.resize(std::size_t(n));
+  tr.rows.resize(std::size_t(n));
   std::vector<OverflowCounters> ovf(static_cast<std::size_t>(n));
   const int nt = threads > 0 ? threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 4) num_threads(nt)
@@ -18,18 +18,22 @@ PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const Hw
     const PrimitiveSetup& s = setups[std::size_t(i)];
     if (!s.visible) continue;
     std::vector<TracedPixel>& out = tr.prims[std::size_t(i)];
+    std::vector<RowSpans>& rows = tr.rows[std::size_t(i)];
     std::size_t count = 0;
     for (int y = s.y0; y < s.y1; ++y) {
-      Span sp[2];
-      const int ns = TraversalUnit::spans(s, y, s.x0, s.x1, sp);
-      for (int k = 0; k < ns; ++k) count += std::size_t(sp[k].x1 - sp[k].x0);
+      RowSpans r;
+      r.y = y;
+      r.n = TraversalUnit::spans(s, y, s.x0, s.x1, r.s);
+      if (r.n == 0) continue;
+      for (int k = 0; k < r.n; ++k) count += std::size_t(r.s[k].x1 - r.s[k].x0);
+      rows.push_back(r);
     }
     out.reserve(count);
     PixelPipeline pp(s, cfg);
-    for (int y = s.y0; y < s.y1; ++y) {
-      Span sp[2];
-      const int ns = TraversalUnit::spans(s, y, s.x0, s.x1, sp);
-      for (int k = 0; k < ns; ++k) {
+    for (const RowSpans& r : rows) {
+      const int y = r.y;
+      const Span* sp = r.s;
+      for (int k = 0; k < r.n; ++k) {
         pp.startSpan(sp[k].x0 - s.x0, y - s.y0);
         for (int x = sp[k].x0; x < sp[k].x1; ++x) {
           const PixelOutcome o = pp.evaluate(ovf[std::size_t(i)]);

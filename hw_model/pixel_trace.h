@@ -16,6 +16,7 @@
 #include "hw_model/hw_config.h"
 #include "hw_model/hw_stats.h"
 #include "hw_model/primitive_setup.h"
+#include "hw_model/traversal_unit.h"
 
 namespace qacc {
 
@@ -27,8 +28,14 @@ struct TracedPixel {
   std::uint16_t clipPasses = 0;
 };
 
+struct RowSpans {  // a row of a primitive with at least one span
+  int y = 0, n = 0;
+  Span s[2];
+};
+
 struct PixelTrace {
   std::vector<std::vector<TracedPixel>> prims;  // indexed by primitive, traversal order
+  std::vector<std::vector<RowSpans>> rows;      // indexed by primitive: its non-empty rows
   OverflowCounters overflow;                    // datapath overflows of all pixels
   static PixelTrace build(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads);
 };

@@ -1,5 +1,7 @@
 #include "hw_model/traversal_unit.h"
 
+#include "hw_model/pixel_trace.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -61,17 +63,16 @@ int TraversalUnit::spans(const PrimitiveSetup& s, int y, int xlo, int xhi, Span 
 }
 
 bool TraversalUnit::nextRow() {
-  const PrimitiveSetup& s = setups_[std::size_t(prim_)];
-  while (y_ < s.y1) {
-    nSpans_ = spans(s, y_, s.x0, s.x1, rowSpans_);
-    span_ = 0;
-    if (nSpans_ > 0) {
-      x_ = rowSpans_[0].x0;
-      return true;
-    }
-    ++y_;
-  }
-  return false;
+  const std::vector<RowSpans>& rows = trace_.rows[std::size_t(prim_)];
+  if (row_ >= rows.size()) return false;
+  const RowSpans& r = rows[row_++];
+  y_ = r.y;
+  nSpans_ = r.n;
+  rowSpans_[0] = r.s[0];
+  rowSpans_[1] = r.s[1];
+  span_ = 0;
+  x_ = rowSpans_[0].x0;
+  return true;
 }
 
 bool TraversalUnit::tick(std::uint64_t now) {
@@ -83,7 +84,7 @@ bool TraversalUnit::tick(std::uint64_t now) {
     countItem();
     changed = true;
     const PrimitiveSetup& s = setups_[std::size_t(prim_)];
-    y_ = s.y0;
+    row_ = 0;
     k_ = 0;
     if (!s.visible || !nextRow()) prim_ = -1;
     countBusy();
@@ -112,7 +113,6 @@ bool TraversalUnit::tick(std::uint64_t now) {
       if (++span_ < nSpans_) {
         x_ = rowSpans_[span_].x0;
       } else {
-        ++y_;
         if (!nextRow()) prim_ = -1;
         break;  // a new row starts next cycle
       }

@@ -25,25 +25,29 @@ struct PixelToken {
   int k = 0;  // issue order within the primitive: its entry in the PixelTrace
 };
 
+struct PixelTrace;
+
 class TraversalUnit : public Unit {
  public:
   // Spans of row y (screen) restricted to [xlo, xhi); returns their number (0..2).
   static int spans(const PrimitiveSetup& s, int y, int xlo, int xhi, Span out[2]);
   static int pipelineOf(int x, int y, int P) { return (x + y) % P; }
 
-  TraversalUnit(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, Fifo<int>& in,
+  // The rows' spans come from the PixelTrace (the same spans(), solved beforehand).
+  TraversalUnit(const std::vector<PrimitiveSetup>& setups, const PixelTrace& trace, Fifo<int>& in,
                 std::vector<Fifo<PixelToken>>& out)
-      : Unit("traversal"), setups_(setups), cfg_(cfg), in_(in), out_(out) {}
+      : Unit("traversal"), setups_(setups), trace_(trace), in_(in), out_(out) {}
   bool tick(std::uint64_t now) override;
   bool holdsWork() const override { return prim_ >= 0; }
 
  private:
   bool nextRow();
   const std::vector<PrimitiveSetup>& setups_;
-  const HwConfig& cfg_;
+  const PixelTrace& trace_;
   Fifo<int>& in_;
   std::vector<Fifo<PixelToken>>& out_;
   int prim_ = -1;
+  std::size_t row_ = 0;  // next row of the primitive's trace
   int y_ = 0;
   Span rowSpans_[2];
   int nSpans_ = 0, span_ = 0, x_ = 0, k_ = 0;

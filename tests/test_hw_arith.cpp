@@ -136,6 +136,10 @@ TEST(HwConfig, ParsesAndRefusesBadKeys) {
   EXPECT_THROW(parseHwConfig(R"({"pipelinez": 4})", "t.json"), std::invalid_argument);
   EXPECT_THROW(parseHwConfig(R"({"pipelines": 0})", "t.json"), std::invalid_argument);
   EXPECT_THROW(parseHwConfig(R"({"pipelines": 2.5})", "t.json"), std::invalid_argument);
+  EXPECT_THROW(parseHwConfig(R"({"shading_normalizer": "fast"})", "t.json"), std::invalid_argument);
+  EXPECT_THROW(parseHwConfig(R"({"depth_variant": 1})", "t.json"), std::invalid_argument);
+  EXPECT_EQ(parseHwConfig(R"({"shading_normalizer": "recurrence"})", "t.json").shading_normalizer,
+            Normalizer::Recurrence);
   // round trip
   const HwConfig d = parseHwConfig(hwConfigToJson(c), "rt.json");
   EXPECT_EQ(hwConfigToJson(d), hwConfigToJson(c));
