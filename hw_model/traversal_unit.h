@@ -5,6 +5,8 @@
 // then decide coverage exactly from the interpolated Δ. Caps of solids (a <= 0) and
 // facets can show where Δ < 0: their rows are issued whole. Pixels go to the P
 // pipelines screen-interleaved: pipeline (x + y) mod P, up to P pixels per cycle.
+// spans() is the arithmetic; the cycle engine solves every row once in the pixel
+// datapath pass (pixel_trace.h) and the timed unit walks those rows.
 #pragma once
 #include <vector>
 
