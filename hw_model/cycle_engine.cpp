@@ -21,7 +21,7 @@ namespace {
 
 // The shading units' output port. Colours are a pure function of the Z-buffer's final
 // winners (ShadingUnit::shade of the same inputs), so the frame is resolved once the
-// pipeline has drained (resolveFrame, shared with `hw`); the port counts what the
+// pipeline has drained (resolveFrame: resolvePixel, as `hw` does per tile); the port counts what the
 // shading units delivered, which the functional engine cannot know.
 struct ColourWriter {
   std::uint64_t delivered = 0;

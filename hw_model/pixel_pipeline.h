@@ -2,9 +2,10 @@
 // primitive — interpolators (Δ, b, c quadratic/linear; clip planes h; plane depths zk;
 // facet depth), square-root extractor, depth unit, clip unit and caps — producing the
 // visible point of the primitive on the line of a pixel, in fixed point.
-// Along a span the interpolators advance by forward differences (startSpan/stepRight);
-// evaluateAt() loads them directly at one pixel (the same values, bit for bit). Both
-// engines call exactly this code; the cycle engine only adds timing around it.
+// startSpan() loads the interpolators directly at a pixel; along the span they advance
+// by forward differences (stepRight; the same values, bit for bit). Both engines call
+// exactly this code (hw per tile, hw-cycle in its pixel datapath pass, pixel_trace.h);
+// the cycle engine only adds timing around it.
 #pragma once
 #include <vector>
 
@@ -29,11 +30,7 @@ class PixelPipeline {
   PixelPipeline(const PrimitiveSetup& s, const HwConfig& cfg);
   void startSpan(int u, int v);
   void stepRight();
-  PixelOutcome evaluate(OverflowCounters& ovf);        // at the current position
-  PixelOutcome evaluateAt(int u, int v, OverflowCounters& ovf) {
-    startSpan(u, v);
-    return evaluate(ovf);
-  }
+  PixelOutcome evaluate(OverflowCounters& ovf);  // at the current position
   // Pipeline latency in cycles (interpolators + sqrt + depth + clip + caps).
   static int latency(const HwConfig& cfg) { return cfg.pixelPipelineLatency(); }
 

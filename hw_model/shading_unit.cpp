@@ -169,8 +169,6 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
 
 }  // namespace
 
-void ShadingUnit::normalize(const i128 in[3], const HwConfig& cfg, i128 out[3]) { normalizeT<i128>(in, cfg, out); }
-
 std::array<std::uint8_t, 3> ShadingUnit::shade(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg,
                                                int u, int v, i128 z, int cap, OverflowCounter& ovf) {
   (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow

@@ -57,8 +57,6 @@ class ShadingUnit : public Unit {
   // where the widths allow; the two must agree bit for bit).
   static std::array<std::uint8_t, 3> shadeWide(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg,
                                                int u, int v, i128 z, int cap);
-  // Normalises an exact vector to a unit vector in 1.unit_frac (zero stays zero).
-  static void normalize(const i128 in[3], const HwConfig& cfg, i128 out[3]);
 
   // Timing: pipelined, one pixel every shading_cycles_per_pixel, shading_latency deep;
   // the colour is written to the frame buffer when the pixel leaves the unit.
