@@ -139,7 +139,8 @@ using Spline = std::conditional_t<D == 2, SimplexSpline2, SimplexSpline3>;
 
 template <int D>
 Spline<D> readSpline(const JsonNode& o) {
-  const int degree = o.get("degree") ? int(o.at("degree").integer(1, D == 2 ? 3 : 2)) : 2;
+  // The cells become quadrics: a spline of higher degree has no exact quadric per cell.
+  const int degree = o.get("degree") ? int(o.at("degree").integer(1, 2)) : 2;
   const Mesh<D> mesh = readMesh<D>(o);
   const std::string continuity = o.string("continuity", "G1");
   if (continuity != "G0" && continuity != "G1") o.at("continuity").fail("continuity must be \"G0\" or \"G1\"");

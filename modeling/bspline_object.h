@@ -31,8 +31,8 @@
 // triangulation's bounding box, inset by its longest edge for G1 (the boundary zone where
 // the knot clouds leave the partition of unity incomplete is not shown); for volumes: the
 // bounding box inset by the knot reach (the largest distance of a knot from its vertex;
-// 0 for G0), beyond which the basis is a partition of unity. Volumes take degree 1 or 2
-// (cells are quadrics) and "cull" (default true; false emits every cell, for measurements:
+// 0 for G0), beyond which the basis is a partition of unity. Both forms take degree 1 or
+// 2 (every cell is a quadric). Volumes take "cull" (default true; false emits every cell, for measurements:
 // the image is the same); `qacc info` prints their cell statistics and build time.
 #pragma once
 #include <vector>

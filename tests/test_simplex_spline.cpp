@@ -170,4 +170,16 @@ TEST(SimplexSpline, SceneTypeEmitsClippedHeightFieldCells) {
     "objects": [{"type": "bspline", "grid": {"min": [-2, -2], "max": [2, 2], "n": 4},
                  "continuity": "G2", "height": "x"}]})js";
   EXPECT_THROW(parseScene(bad, "b.json", "."), SceneError);
+  // A cubic spline has no quadric per cell: refused, not truncated to degree 2.
+  const std::string cubic = R"js({"format": "qacc-scene/1",
+    "camera": {"type": "perspective", "eye": [0, -5, 4], "target": [0, 0, 0], "up": [0, 0, 1]},
+    "objects": [{"type": "bspline", "grid": {"min": [-2, -2], "max": [2, 2], "n": 4},
+                 "continuity": "G0", "degree": 3, "height": "x^3"}]})js";
+  try {
+    parseScene(cubic, "c.json", ".");
+    ADD_FAILURE() << "a degree-3 bspline was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.file(), "c.json");
+    EXPECT_EQ(e.jsonPath(), "/objects/0/degree") << e.what();
+  }
 }
