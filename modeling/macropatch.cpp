@@ -100,6 +100,52 @@ void checkCell(const Tetrahedron& t) {
     throw std::invalid_argument("macropatch: flat tetrahedron (the apex lies in a face plane of the control net)");
 }
 
+// The Bézier triangle's tangents ∂B/∂u − ∂B/∂w and ∂B/∂v − ∂B/∂w at (u, v, w).
+std::array<Vector3d, 2> bezierTriangleTangents(const ControlNet& P, double u, double v, double w) {
+  const Vector3d Bu = 2 * (u * P[0] + v * P[1] + w * P[5]), Bv = 2 * (v * P[2] + u * P[1] + w * P[3]),
+                 Bw = 2 * (w * P[4] + v * P[3] + u * P[5]);
+  return {Bu - Bw, Bv - Bw};
+}
+
+// A sample of the net's Bézier triangle for the least-squares fits: the point X, its two
+// tangents, the cell whose tetrahedron holds it (the largest smallest barycentric
+// coordinate λ = W X, above −1e-9) and λ there.
+struct TriangleSample {
+  Vector3d X;
+  std::array<Vector3d, 2> tangents;
+  std::size_t cell = 0;
+  Vector4d lambda;
+};
+
+// Samples on the (u, v, w) grid of step 1/k (k = max(2, fitSamples)); samples outside
+// every cell are left out. W[t] maps a point to the barycentric coordinates of cell t.
+std::vector<TriangleSample> triangleSamples(const ControlNet& P, const std::vector<Eigen::Matrix4d>& W,
+                                            int fitSamples) {
+  std::vector<TriangleSample> out;
+  const int k = std::max(2, fitSamples);
+  for (int i = 0; i <= k; ++i)
+    for (int j = 0; i + j <= k; ++j) {
+      const double u = double(i) / k, v = double(j) / k, w = 1.0 - u - v;
+      TriangleSample s;
+      s.X = bezierTrianglePoint(P, u, v, w);
+      int best = -1;
+      double bestMin = -1e-9;
+      for (std::size_t t = 0; t < W.size(); ++t) {
+        const Vector4d lam = W[t] * s.X.homogeneous();
+        if (lam.minCoeff() > bestMin) {
+          bestMin = lam.minCoeff();
+          best = int(t);
+          s.lambda = lam;
+        }
+      }
+      if (best < 0) continue;
+      s.cell = std::size_t(best);
+      s.tangents = bezierTriangleTangents(P, u, v, w);
+      out.push_back(s);
+    }
+  return out;
+}
+
 // ---- G0: 4 cells with constant coefficients ---------------------------------------------
 
 void buildG0(const ControlNet& P, int patch, const MacropatchOptions& o, std::vector<MacropatchCell>& out) {
@@ -153,30 +199,17 @@ MacropatchOptions fitG0Constants(const ControlNet& P, const MacropatchOptions& o
   std::vector<Eigen::Matrix4d> W;
   for (const auto& c : base) W.push_back(BBQuadric::vertexMatrix(c.bb.V).transpose().inverse());
   std::vector<std::array<double, 4>> rows;  // 3 coefficients + constant term
-  const int k = std::max(2, o.fit_samples);
-  for (int i = 0; i <= k; ++i)
-    for (int j = 0; i + j <= k; ++j) {
-      const double u = double(i) / k, v = double(j) / k, w = 1.0 - u - v;
-      const Vector3d X = bezierTrianglePoint(P, u, v, w);
-      const Vector3d Bu = 2 * (u * P[0] + v * P[1] + w * P[5]), Bv = 2 * (v * P[2] + u * P[1] + w * P[3]),
-                     Bw = 2 * (w * P[4] + v * P[3] + u * P[5]);
-      int best = -1;
-      double bestMin = -1e-9;
-      for (std::size_t t = 0; t < base.size(); ++t) {
-        const double m = (W[t] * X.homogeneous()).minCoeff();
-        if (m > bestMin) bestMin = m, best = int(t);
-      }
-      if (best < 0) continue;
-      const std::size_t b = std::size_t(best);
-      auto value = [&](const BBQuadric& bb) { return bb.toQuadric().eval(X); };
-      auto slope = [&](const BBQuadric& bb, const Vector3d& tv) { return o.normal_weight * bb.toQuadric().gradient(X).dot(tv); };
-      const double f0 = value(base[b].bb);
-      rows.push_back({value(unit[0][b].bb) - f0, value(unit[1][b].bb) - f0, value(unit[2][b].bb) - f0, f0});
-      for (const Vector3d& tv : {Vector3d(Bu - Bw), Vector3d(Bv - Bw)}) {
-        const double g0 = slope(base[b].bb, tv);
-        rows.push_back({slope(unit[0][b].bb, tv) - g0, slope(unit[1][b].bb, tv) - g0, slope(unit[2][b].bb, tv) - g0, g0});
-      }
+  for (const TriangleSample& s : triangleSamples(P, W, o.fit_samples)) {
+    const std::size_t b = s.cell;
+    auto value = [&](const BBQuadric& bb) { return bb.toQuadric().eval(s.X); };
+    auto slope = [&](const BBQuadric& bb, const Vector3d& tv) { return o.normal_weight * bb.toQuadric().gradient(s.X).dot(tv); };
+    const double f0 = value(base[b].bb);
+    rows.push_back({value(unit[0][b].bb) - f0, value(unit[1][b].bb) - f0, value(unit[2][b].bb) - f0, f0});
+    for (const Vector3d& tv : s.tangents) {
+      const double g0 = slope(base[b].bb, tv);
+      rows.push_back({slope(unit[0][b].bb, tv) - g0, slope(unit[1][b].bb, tv) - g0, slope(unit[2][b].bb, tv) - g0, g0});
     }
+  }
   std::array<bool, 3> active = {true, true, true};
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   for (int round = 0; round < 3; ++round) {
@@ -322,45 +355,27 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
   // Fit rows: the Bézier triangle's points and tangents.
   std::vector<Eigen::Matrix4d> W(static_cast<std::size_t>(n));  // λ = W X
   for (int t = 0; t < n; ++t) W[std::size_t(t)] = BBQuadric::vertexMatrix(cells[std::size_t(t)]).transpose().inverse();
-  const int k = std::max(2, o.fit_samples);
   std::vector<Row> fit;
-  for (int i = 0; i <= k; ++i)
-    for (int j = 0; i + j <= k; ++j) {
-      const double u = double(i) / k, v = double(j) / k, w = 1.0 - u - v;
-      const Vector3d X = bezierTrianglePoint(P, u, v, w);
-      // ∂B/∂u - ∂B/∂w and ∂B/∂v - ∂B/∂w.
-      const Vector3d Bu = 2 * (u * P[0] + v * P[1] + w * P[5]), Bv = 2 * (v * P[2] + u * P[1] + w * P[3]),
-                     Bw = 2 * (w * P[4] + v * P[3] + u * P[5]);
-      const Vector3d t1 = Bu - Bw, t2 = Bv - Bw;
-      int best = -1;
-      double bestMin = -1e-9;
-      Vector4d bestLam;
-      for (int t = 0; t < n; ++t) {
-        const Vector4d lam = W[std::size_t(t)] * X.homogeneous();
-        if (lam.minCoeff() > bestMin) {
-          bestMin = lam.minCoeff();
-          best = t;
-          bestLam = lam;
-        }
-      }
-      if (best < 0) continue;
-      const Eigen::Matrix4d& Wt = W[std::size_t(best)];
-      Row f;
+  for (const TriangleSample& s : triangleSamples(P, W, o.fit_samples)) {
+    const int best = int(s.cell);
+    const Vector4d& lam = s.lambda;
+    const Eigen::Matrix4d& Wt = W[s.cell];
+    Row f;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a; b < 4; ++b)
+        f.terms.push_back({10 * best + entryIndex(a, b), (a == b ? 1.0 : 2.0) * lam[a] * lam[b]});
+    fit.push_back(f);
+    for (const Vector3d& tv : s.tangents) {
+      Row g;
       for (int a = 0; a < 4; ++a)
-        for (int b = a; b < 4; ++b)
-          f.terms.push_back({10 * best + entryIndex(a, b), (a == b ? 1.0 : 2.0) * bestLam[a] * bestLam[b]});
-      fit.push_back(f);
-      for (const Vector3d& tv : {t1, t2}) {
-        Row g;
-        for (int a = 0; a < 4; ++a)
-          for (int b = a; b < 4; ++b) {
-            const double da = Wt.row(a).head<3>().dot(tv), db = Wt.row(b).head<3>().dot(tv);
-            const double c = a == b ? 2.0 * bestLam[a] * da : 2.0 * (bestLam[b] * da + bestLam[a] * db);
-            g.terms.push_back({10 * best + entryIndex(a, b), o.normal_weight * c});
-          }
-        fit.push_back(g);
-      }
+        for (int b = a; b < 4; ++b) {
+          const double da = Wt.row(a).head<3>().dot(tv), db = Wt.row(b).head<3>().dot(tv);
+          const double c = a == b ? 2.0 * lam[a] * da : 2.0 * (lam[b] * da + lam[a] * db);
+          g.terms.push_back({10 * best + entryIndex(a, b), o.normal_weight * c});
+        }
+      fit.push_back(g);
     }
+  }
   MatrixXd F = MatrixXd::Zero(Eigen::Index(fit.size()), unknowns);
   for (std::size_t r = 0; r < fit.size(); ++r)
     for (const auto& tm : fit[r].terms) F(Eigen::Index(r), tm.first) += tm.second;
@@ -391,9 +406,8 @@ Vector3d bezierTrianglePoint(const ControlNet& P, double u, double v, double w) 
 }
 
 Vector3d bezierTriangleNormal(const ControlNet& P, double u, double v, double w) {
-  const Vector3d Bu = 2 * (u * P[0] + v * P[1] + w * P[5]), Bv = 2 * (v * P[2] + u * P[1] + w * P[3]),
-                 Bw = 2 * (w * P[4] + v * P[3] + u * P[5]);
-  Vector3d n = (Bu - Bw).cross(Bv - Bw);
+  const std::array<Vector3d, 2> t = bezierTriangleTangents(P, u, v, w);
+  Vector3d n = t[0].cross(t[1]);
   const Vector3d outward = (P[1] + P[3] + P[5]) / 3.0 - (P[0] + P[2] + P[4]) / 3.0;
   if (n.dot(outward) < 0) n = -n;
   return n;
