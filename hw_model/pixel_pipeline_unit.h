@@ -5,7 +5,6 @@
 // results leave in order after pixelPipelineLatency() cycles; pixels with a visible point
 // go on to the Z-buffer, the others retire.
 #pragma once
-#include <memory>
 #include <vector>
 
 #include "hw_model/delay_queue.h"

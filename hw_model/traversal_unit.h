@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "hw_model/fifo.h"
-#include "hw_model/hw_config.h"
 #include "hw_model/primitive_setup.h"
 #include "hw_model/unit.h"
 
