@@ -9,6 +9,7 @@ QACC_PACKAGES=(
   libgtest-dev                       # tests
   libosmesa6-dev                     # triangles through OSMesa (llvmpipe)
   pymol-data                         # real PDB files for the molecule scene
+  python3                            # tools/behaviour_check, plots
 )
 
 qacc_install_deps() {

@@ -1,0 +1,177 @@
+#include "hw_model/config/hw_config.h"
+
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace qacc {
+
+int HwConfig::sqrtLatency() const {
+  const int bitsPerStep = sqrt_radix == 4 ? 2 : 1;
+  const int resultBits = (delta_bits + 1) / 2;
+  return (resultBits + bitsPerStep - 1) / bitsPerStep + 1;
+}
+
+int HwConfig::dividerLatency() const {
+  const int bitsPerStep = divider_radix == 4 ? 2 : 1;
+  return (depth_bits + bitsPerStep - 1) / bitsPerStep + 1;
+}
+
+int HwConfig::pixelPipelineLatency() const {
+  // interpolators (1) + sqrt + depth (divider, or one multiplier stage) + clip (1) + caps (1)
+  const int depth = depth_variant == DepthVariant::Stable ? dividerLatency() : 2;
+  return 1 + sqrtLatency() + depth + 1 + 1;
+}
+
+namespace {
+
+struct Field {
+  std::function<void(HwConfig&, const nlohmann::json&, const std::string&)> set;
+  std::function<nlohmann::json(const HwConfig&)> get;
+};
+
+Field intField(int HwConfig::*m, int lo, int hi) {
+  return {[m, lo, hi](HwConfig& c, const nlohmann::json& j, const std::string& where) {
+            if (!j.is_number_integer()) throw std::invalid_argument(where + ": expected an integer");
+            const long long v = j.get<long long>();
+            if (v < lo || v > hi)
+              throw std::invalid_argument(where + ": " + std::to_string(v) + " out of range [" + std::to_string(lo) +
+                                          ", " + std::to_string(hi) + "]");
+            c.*m = int(v);
+          },
+          [m](const HwConfig& c) { return nlohmann::json(c.*m); }};
+}
+
+// A field holding one of two named values: "first" or "second".
+template <typename E>
+Field choiceField(E HwConfig::*m, const char* first, E a, const char* second, E b) {
+  return {[=](HwConfig& c, const nlohmann::json& j, const std::string& where) {
+            const std::string s = j.is_string() ? j.get<std::string>() : "";
+            if (s == first) c.*m = a;
+            else if (s == second) c.*m = b;
+            else throw std::invalid_argument(where + ": expected \"" + first + "\" or \"" + second + "\"");
+          },
+          [=](const HwConfig& c) { return nlohmann::json(c.*m == a ? first : second); }};
+}
+
+const std::map<std::string, Field>& fields() {
+  static const std::map<std::string, Field> f = [] {
+    std::map<std::string, Field> m;
+    m["name"] = {[](HwConfig& c, const nlohmann::json& j, const std::string& w) {
+                   if (!j.is_string()) throw std::invalid_argument(w + ": expected a string");
+                   c.name = j.get<std::string>();
+                 },
+                 [](const HwConfig& c) { return nlohmann::json(c.name); }};
+    m["clock_mhz"] = {[](HwConfig& c, const nlohmann::json& j, const std::string& w) {
+                        if (!j.is_number() || !(j.get<double>() > 0) || j.get<double>() > 1e5)
+                          throw std::invalid_argument(w + ": expected a clock in (0, 100000] MHz");
+                        c.clock_mhz = j.get<double>();
+                      },
+                      [](const HwConfig& c) { return nlohmann::json(c.clock_mhz); }};
+    m["rounding"] = {[](HwConfig& c, const nlohmann::json& j, const std::string& w) {
+                       if (!j.is_string()) throw std::invalid_argument(w + ": expected a string");
+                       try {
+                         c.rounding = roundingFromString(j.get<std::string>());
+                       } catch (const std::exception& e) {
+                         throw std::invalid_argument(w + ": " + e.what());
+                       }
+                     },
+                     [](const HwConfig& c) { return nlohmann::json(toString(c.rounding)); }};
+    m["overflow"] = {[](HwConfig& c, const nlohmann::json& j, const std::string& w) {
+                       if (!j.is_string()) throw std::invalid_argument(w + ": expected a string");
+                       try {
+                         c.overflow = overflowFromString(j.get<std::string>());
+                       } catch (const std::exception& e) {
+                         throw std::invalid_argument(w + ": " + e.what());
+                       }
+                     },
+                     [](const HwConfig& c) { return nlohmann::json(toString(c.overflow)); }};
+    m["depth_variant"] =
+        choiceField(&HwConfig::depth_variant, "stable", DepthVariant::Stable, "reciprocal", DepthVariant::Reciprocal);
+    m["shading_normalizer"] = choiceField(&HwConfig::shading_normalizer, "newton", Normalizer::Newton, "recurrence",
+                                          Normalizer::Recurrence);
+    m["bus_width_bits"] = intField(&HwConfig::bus_width_bits, 8, 1024);
+    m["bus_cycles_per_word"] = intField(&HwConfig::bus_cycles_per_word, 1, 64);
+    m["descriptor_word_bits"] = intField(&HwConfig::descriptor_word_bits, 8, 64);
+    m["host_fifo_depth"] = intField(&HwConfig::host_fifo_depth, 1, 1024);
+    m["setup_mad_units"] = intField(&HwConfig::setup_mad_units, 1, 256);
+    m["setup_fifo_depth"] = intField(&HwConfig::setup_fifo_depth, 1, 1024);
+    m["pipelines"] = intField(&HwConfig::pipelines, 1, 64);
+    m["pixel_fifo_depth"] = intField(&HwConfig::pixel_fifo_depth, 1, 4096);
+    m["clip_evaluators"] = intField(&HwConfig::clip_evaluators, 1, 64);
+    m["value_bits"] = intField(&HwConfig::value_bits, 12, 40);
+    m["delta_bits"] = intField(&HwConfig::delta_bits, 16, 80);
+    m["interp_frac_bits"] = intField(&HwConfig::interp_frac_bits, 0, 32);
+    m["interp_acc_bits"] = intField(&HwConfig::interp_acc_bits, 24, 120);
+    m["depth_frac_bits"] = intField(&HwConfig::depth_frac_bits, 12, 36);
+    m["depth_bits"] = intField(&HwConfig::depth_bits, 14, 40);
+    m["clip_bits"] = intField(&HwConfig::clip_bits, 8, 40);
+    m["recip_bits"] = intField(&HwConfig::recip_bits, 8, 48);
+    m["zbuffer_bits"] = intField(&HwConfig::zbuffer_bits, 8, 31);
+    m["normal_bits"] = intField(&HwConfig::normal_bits, 6, 30);
+    m["unit_frac_bits"] = intField(&HwConfig::unit_frac_bits, 6, 28);
+    m["color_frac_bits"] = intField(&HwConfig::color_frac_bits, 8, 16);
+    m["sqrt_radix"] = intField(&HwConfig::sqrt_radix, 2, 4);
+    m["divider_radix"] = intField(&HwConfig::divider_radix, 2, 4);
+    m["shading_cycles_per_pixel"] = intField(&HwConfig::shading_cycles_per_pixel, 1, 64);
+    m["shading_latency"] = intField(&HwConfig::shading_latency, 1, 256);
+    m["zbuffer_banks"] = intField(&HwConfig::zbuffer_banks, 1, 64);
+    m["zbuffer_read_latency"] = intField(&HwConfig::zbuffer_read_latency, 1, 64);
+    m["zbuffer_bank_busy"] = intField(&HwConfig::zbuffer_bank_busy, 1, 64);
+    return m;
+  }();
+  return f;
+}
+
+}  // namespace
+
+HwConfig parseHwConfig(const std::string& text, const std::string& file) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(file + ": JSON syntax error: " + e.what());
+  }
+  if (!j.is_object()) throw std::invalid_argument(file + ": expected a JSON object");
+  HwConfig c;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (it.key() == "comment" || it.key() == "format") continue;
+    const auto f = fields().find(it.key());
+    if (f == fields().end()) throw std::invalid_argument(file + ": /" + it.key() + ": unknown key");
+    f->second.set(c, it.value(), file + ": /" + it.key());
+  }
+  if (c.sqrt_radix == 3 || c.divider_radix == 3)
+    throw std::invalid_argument(file + ": radix must be 2 or 4");
+  if (c.depth_frac_bits + 2 > c.depth_bits)
+    throw std::invalid_argument(file + ": depth_bits must exceed depth_frac_bits by at least 2");
+  if (c.zbuffer_bits > c.depth_frac_bits)
+    throw std::invalid_argument(file + ": zbuffer_bits must not exceed depth_frac_bits");
+  if (c.delta_bits < 2 * c.value_bits - 8)
+    throw std::invalid_argument(file + ": delta_bits must be at least 2 value_bits - 8");
+  if (c.interp_acc_bits < c.delta_bits + c.interp_frac_bits + 2)
+    throw std::invalid_argument(file + ": interp_acc_bits must hold delta_bits + interp_frac_bits + 2");
+  if (c.unit_frac_bits + 2 > c.normal_bits + 2 || c.unit_frac_bits > 28)
+    throw std::invalid_argument(file + ": unit_frac_bits too large for normal_bits");
+  return c;
+}
+
+HwConfig loadHwConfig(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument(path + ": cannot open accelerator configuration");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parseHwConfig(ss.str(), path);
+}
+
+std::string hwConfigToJson(const HwConfig& c) {
+  nlohmann::json j = nlohmann::json::object();
+  j["format"] = "qacc-hw-config/1";
+  for (const auto& [k, f] : fields()) j[k] = f.get(c);
+  return j.dump(2);
+}
+
+}  // namespace qacc

@@ -1,0 +1,69 @@
+// HwConfig: every parameter of the emulated accelerator (docs/HW_MODEL.md gives each
+// default and the argument for it). Loaded from one JSON file (`--config`); a key that is
+// absent keeps its default, an unknown key or a value out of range is refused.
+#pragma once
+#include <string>
+
+#include "hw_model/datapath/fixed_point.h"
+
+namespace qacc {
+
+enum class DepthVariant { Stable, Reciprocal };
+// How the shading unit normalises vectors: seed ROM + one Newton step (rsqrt_unit.h), or
+// a digit-recurrence square root followed by a divider.
+enum class Normalizer { Newton, Recurrence };
+
+struct HwConfig {
+  std::string name = "default";
+  // Clock and host interface.
+  double clock_mhz = 50.0;     // modeled core clock
+  int bus_width_bits = 32;     // host bus data width
+  int bus_cycles_per_word = 1; // core cycles per bus transfer
+  int descriptor_word_bits = 32;  // one coefficient / plane / attribute word (IEEE single)
+  int host_fifo_depth = 4;     // primitive descriptors buffered after the host interface
+  // Setup.
+  int setup_mad_units = 4;     // multiply-add units of the setup processor
+  int setup_fifo_depth = 2;    // set-up primitives waiting for traversal
+  // Pixel pipelines.
+  int pipelines = 2;           // P, screen-interleaved pixel pipelines
+  int pixel_fifo_depth = 8;    // traversal -> pipeline, pipeline -> Z, Z -> shading FIFOs
+  int clip_evaluators = 4;     // K linear evaluators; more planes cost extra passes
+  // Datapaths (bits).
+  int value_bits = 32;         // a, b, c and sqrt(Δ) (block floating, per primitive)
+  int delta_bits = 64;         // Δ = b² − ac (block floating, per primitive); sqrt input
+  int interp_frac_bits = 24;   // extra fraction bits of interpolator coefficients
+  int interp_acc_bits = 100;   // interpolator accumulator width
+  int depth_frac_bits = 28;    // internal window depth fraction bits
+  int depth_bits = 32;         // internal window depth width (sign + integer + fraction)
+  int clip_bits = 32;          // clip-plane values (block floating, per plane)
+  int recip_bits = 32;         // 1/a mantissa (reciprocal depth variant)
+  int zbuffer_bits = 24;       // stored depth
+  int normal_bits = 16;        // normal / view / light vector mantissas after normalisation
+  int unit_frac_bits = 14;     // unit vectors and dot products (1.14)
+  int color_frac_bits = 12;    // linear colour (0.12), input of the sRGB table
+  Rounding rounding = Rounding::Nearest;
+  OverflowMode overflow = OverflowMode::Saturate;
+  // Arithmetic units.
+  int sqrt_radix = 4;          // digit-recurrence radix (2 or 4): bits per step = log2(radix)
+  int divider_radix = 4;       // digit-recurrence divider radix (2 or 4)
+  DepthVariant depth_variant = DepthVariant::Stable;
+  int shading_cycles_per_pixel = 1;  // shading initiation interval
+  int shading_latency = 12;
+  Normalizer shading_normalizer = Normalizer::Newton;
+  // Z-buffer memory.
+  int zbuffer_banks = 4;
+  int zbuffer_read_latency = 2;  // cycles from request to data
+  int zbuffer_bank_busy = 2;     // cycles a bank is occupied by one read-modify-write
+
+  // Derived latencies of the pipelined units.
+  int sqrtLatency() const;     // cycles: one per digit step of the recurrence + 1
+  int dividerLatency() const;
+  int pixelPipelineLatency() const;  // interpolators + sqrt + depth + clip + caps
+};
+
+HwConfig loadHwConfig(const std::string& path);
+HwConfig parseHwConfig(const std::string& text, const std::string& file);
+// JSON text of a configuration (every key, so a saved file documents itself).
+std::string hwConfigToJson(const HwConfig& c);
+
+}  // namespace qacc

@@ -1,0 +1,46 @@
+// PixelPipeline: the arithmetic of one pixel pipeline (design §3.2 step 4) for one
+// primitive — interpolators (Δ, b, c quadratic/linear; clip planes h; plane depths zk;
+// facet depth), square-root extractor, depth unit, clip unit and caps — producing the
+// visible point of the primitive on the line of a pixel, in fixed point.
+// startSpan() loads the interpolators directly at a pixel; along the span they advance
+// by forward differences (stepRight; the same values, bit for bit). Both engines call
+// exactly this code (hw per tile, hw-cycle in its pixel datapath pass, pixel_trace.h);
+// the cycle engine only adds timing around it.
+#pragma once
+#include <vector>
+
+#include "hw_model/config/hw_config.h"
+#include "hw_model/report/hw_stats.h"
+#include "hw_model/datapath/linear_interpolator.h"
+#include "hw_model/datapath/primitive_setup.h"
+#include "hw_model/datapath/quadratic_interpolator.h"
+
+namespace qacc {
+
+struct PixelOutcome {
+  bool candidate = false;  // Δ >= 0, a cap candidate, or a facet pixel: a point to clip
+  bool hit = false;        // a visible point survived clipping
+  int cap = -1;            // plane index of a cap, -1 for a surface point
+  i128 z = 0;              // depth, internal format
+  int clipPasses = 0;      // passes through the clip unit
+};
+
+class PixelPipeline {
+ public:
+  PixelPipeline(const PrimitiveSetup& s, const HwConfig& cfg);
+  void startSpan(int u, int v);
+  void stepRight();
+  PixelOutcome evaluate(OverflowCounters& ovf);  // at the current position
+  // Pipeline latency in cycles (interpolators + sqrt + depth + clip + caps).
+  static int latency(const HwConfig& cfg) { return cfg.pixelPipelineLatency(); }
+
+ private:
+  const PrimitiveSetup& s_;
+  const HwConfig& cfg_;
+  QuadraticInterpolator delta_, c_;
+  LinearInterpolator b_, facetZ_;
+  std::vector<LinearInterpolator> h_, zk_;
+  std::vector<i128> hv_, zkv_;
+};
+
+}  // namespace qacc

@@ -1,0 +1,56 @@
+#include "hw_model/engines/pixel_trace.h"
+
+#include <omp.h>
+
+#include "hw_model/datapath/pixel_datapath.h"
+
+namespace qacc {
+
+PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads) {
+  PixelTrace tr;
+  const int n = int(setups.size());
+  tr.prims.resize(std::size_t(n));
+  tr.rows.resize(std::size_t(n));
+  std::vector<OverflowCounters> ovf(static_cast<std::size_t>(n));
+  const int nt = threads > 0 ? threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 4) num_threads(nt)
+  for (int i = 0; i < n; ++i) {
+    const PrimitiveSetup& s = setups[std::size_t(i)];
+    if (!s.visible) continue;
+    std::vector<TracedPixel>& out = tr.prims[std::size_t(i)];
+    std::vector<RowSpans>& rows = tr.rows[std::size_t(i)];
+    std::size_t count = 0;
+    for (int y = s.y0; y < s.y1; ++y) {
+      RowSpans r;
+      r.y = y;
+      r.n = TraversalUnit::spans(s, y, s.x0, s.x1, r.s);
+      if (r.n == 0) continue;
+      for (int k = 0; k < r.n; ++k) count += std::size_t(r.s[k].x1 - r.s[k].x0);
+      rows.push_back(r);
+    }
+    out.reserve(count);
+    PixelPipeline pp(s, cfg);
+    for (const RowSpans& r : rows) {
+      const int y = r.y;
+      const Span* sp = r.s;
+      for (int k = 0; k < r.n; ++k) {
+        pp.startSpan(sp[k].x0 - s.x0, y - s.y0);
+        for (int x = sp[k].x0; x < sp[k].x1; ++x) {
+          const PixelOutcome o = pp.evaluate(ovf[std::size_t(i)]);
+          pp.stepRight();
+          TracedPixel t;
+          t.z = std::int64_t(o.z);
+          t.cap = std::int16_t(o.cap);
+          t.hit = o.hit;
+          t.candidate = o.candidate;
+          t.clipPasses = std::uint16_t(o.clipPasses);
+          out.push_back(t);
+        }
+      }
+    }
+  }
+  for (const OverflowCounters& o : ovf) tr.overflow.add(o);
+  return tr;
+}
+
+}  // namespace qacc

@@ -1,0 +1,43 @@
+// PixelTrace: the pixel pipelines' datapath results for every pixel the traversal issues,
+// per primitive in traversal order (rows top to bottom, spans left to right), computed by
+// the shared PixelPipeline arithmetic (forward differences along each span, exactly the
+// functional engine's code) in parallel before the cycle-level timing loop runs.
+//
+// The cycle engine is functional-first, timing-directed: the arithmetic of a pixel does
+// not depend on when it is computed, only on the primitive and the pixel, so it is done
+// once, as fast as the host allows (the design's "the software may compute the same bits
+// faster"); the timing units then move tokens that carry these results through FIFOs,
+// banks and latencies cycle by cycle. What depends on timing and order — the Z test
+// against the banked buffer, what reaches shading, stalls — is simulated in the loop.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "hw_model/config/hw_config.h"
+#include "hw_model/report/hw_stats.h"
+#include "hw_model/datapath/primitive_setup.h"
+#include "hw_model/timing/traversal_unit.h"
+
+namespace qacc {
+
+struct TracedPixel {
+  std::int64_t z = 0;        // depth, internal format (fits: 0 <= z <= 2^depth_frac_bits)
+  std::int16_t cap = -1;     // cap plane, -1 for a surface point
+  std::uint8_t hit = 0;      // a visible point survived clipping
+  std::uint8_t candidate = 0;  // a point reached the clip unit
+  std::uint16_t clipPasses = 0;
+};
+
+struct RowSpans {  // a row of a primitive with at least one span
+  int y = 0, n = 0;
+  Span s[2];
+};
+
+struct PixelTrace {
+  std::vector<std::vector<TracedPixel>> prims;  // indexed by primitive, traversal order
+  std::vector<std::vector<RowSpans>> rows;      // indexed by primitive: its non-empty rows
+  OverflowCounters overflow;                    // datapath overflows of all pixels
+  static PixelTrace build(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads);
+};
+
+}  // namespace qacc

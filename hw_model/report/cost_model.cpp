@@ -1,0 +1,106 @@
+#include "hw_model/report/cost_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hw_model/datapath/reciprocal_sqrt.h"
+
+namespace qacc {
+
+double CostModel::shifter(double bits) { return 2.0 * bits * std::ceil(std::log2(std::max(2.0, bits))); }
+
+double CostModel::digitRecurrence(int resultBits, int stepWidth, int radix) {
+  const int perStep = radix == 4 ? 2 : 1;
+  const int steps = (resultBits + perStep - 1) / perStep;
+  // Each stage: (radix - 1) trial adders, registers for the partial remainder and result.
+  return steps * ((radix - 1) * adder(stepWidth) + reg(stepWidth + resultBits));
+}
+
+double CostModel::totalGe() const {
+  double t = 0;
+  for (const UnitCost& u : units) t += u.total();
+  return t;
+}
+
+CostModel CostModel::of(const HwConfig& c) {
+  CostModel m;
+  const int P = c.pipelines, K = c.clip_evaluators;
+  const int acc = c.interp_acc_bits;
+  // Interpolators (forward differences): a quadratic one keeps value, first and second
+  // differences and a row-start copy (4 registers, 3 adders); a linear one keeps value,
+  // row start and two steps (3 registers, 2 adders).
+  const double quadInterp = 4 * reg(acc) + 3 * adder(acc);
+  const double linInterp = 3 * reg(acc) + 2 * adder(acc);
+  const int tokenBits = 12 + 12 + 16 + 16;  // x, y, primitive, issue index
+  const int zReqBits = 12 + 12 + 16 + 4 + c.depth_bits;
+
+  const int descWords = 10 + 4 * 6 + 2;  // a descriptor with six clip planes
+  m.units.push_back({"host_interface", 1,
+                     reg(c.bus_width_bits) + reg(double(descWords) * c.descriptor_word_bits) * (1 + c.host_fifo_depth), 0,
+                     "bus register, descriptor assembly buffer and host FIFO (6-plane descriptors)"});
+  m.units.push_back({"setup", 1,
+                     c.setup_mad_units * floatMad() + reg(double(descWords) * 32 * 2) +
+                         reg(40.0 * acc) * c.setup_fifo_depth,
+                     0, "floating multiply-add units, operand registers, setup FIFO of interpolator seeds"});
+  m.units.push_back({"traversal", 1, 2 * floatMad() + adder(32) + reg(4 * 16) + reg(double(tokenBits)) * P,
+                     0, "span solver (conic roots per row, floating point), counters, pixel issue"});
+
+  // One pixel pipeline.
+  const int sqrtIn = c.delta_bits + 1, sqrtOut = (sqrtIn + 1) / 2;
+  double depthGe;
+  std::string depthBasis;
+  if (c.depth_variant == DepthVariant::Stable) {
+    depthGe = adder(c.value_bits + 1) + 2 * digitRecurrence(c.depth_bits, c.depth_bits + 2, c.divider_radix);
+    depthBasis = "q = -(b + sign(b) s) adder, two dividers (q/a, c/q)";
+  } else {
+    depthGe = 2 * adder(c.value_bits + 1) + 2 * multiplier(c.value_bits + 1, c.recip_bits);
+    depthBasis = "two adders, two multipliers by 1/a";
+  }
+  const double clipGe = K * (linInterp + multiplier(c.clip_bits, c.depth_bits) + adder(c.clip_bits + c.depth_bits));
+  const double capGe = K * (linInterp + adder(c.depth_bits)) + 2 * adder(c.depth_bits);
+  const double pipeGe = 2 * quadInterp + linInterp + digitRecurrence(sqrtOut, sqrtOut + 2, c.sqrt_radix) + depthGe +
+                        clipGe + capGe +
+                        reg(double(c.pixelPipelineLatency()) * (tokenBits + c.depth_bits)) +
+                        3 * reg(double(c.pixel_fifo_depth) * tokenBits);
+  m.units.push_back({"pixel_pipeline", P, pipeGe, 0,
+                     "Δ and c quadratic, b linear interpolators; sqrt (" + std::to_string(sqrtIn) + "-bit input, radix " +
+                         std::to_string(c.sqrt_radix) + "); depth: " + depthBasis + "; " + std::to_string(K) +
+                         " clip evaluators and cap depths; pipeline and FIFO registers"});
+
+  // Z-buffer controller: one comparator per pipeline, bank state, read pipeline.
+  m.units.push_back({"zbuffer", 1,
+                     P * (adder(c.zbuffer_bits) + reg(double(c.zbuffer_read_latency) * zReqBits)) +
+                         c.zbuffer_banks * (reg(24) + reg(4) + adder(4)) +
+                         P * reg(double(c.pixel_fifo_depth) * zReqBits),
+                     0, "depth comparators, bank address and busy counters, read latency registers, Z FIFOs"});
+
+  // One shading unit: field evaluation (normal, view), normalisers (N, V, and H for one
+  // light per cycle), dot products, colour, specular table and sRGB ROM.
+  const int nb = c.normal_bits, uf = c.unit_frac_bits, cf = c.color_frac_bits, G = 8;
+  const double field = 3 * (linInterp + multiplier(nb + 8, c.depth_bits));
+  const int Pr = RsqrtUnit::kPrecision;
+  const double rsqrt =
+      c.shading_normalizer == Normalizer::Newton
+          ? shifter(2 * nb) + rom(RsqrtUnit::romBits()) + multiplier(Pr + 1, Pr + 1) +
+                multiplier(2 * Pr + 2, 2 * Pr + 2) + adder(4 * Pr + 4) + multiplier(Pr + 1, 2 * Pr + 2) +
+                3 * multiplier(nb, Pr + 1)
+          : digitRecurrence(nb + G, nb + G + 2, c.sqrt_radix) + digitRecurrence(uf + 2, uf + G + nb, c.divider_radix) +
+                3 * multiplier(nb, uf + 2);
+  const double normaliser = 3 * shifter(acc) + 3 * multiplier(nb, nb) + 2 * adder(2 * nb) + rsqrt;
+  const double dot3 = 3 * multiplier(uf + 2, uf + 2) + 2 * adder(2 * uf + 4);
+  const double colour = 3 * (multiplier(cf + 2, uf + 2) + multiplier(cf + 8, cf + 2) + 2 * adder(cf + 8));
+  const double specRom = double((1 << uf) + 1) * (cf + 4), srgbRom = double((1 << cf) + 1) * 8;
+  const double rsqrtRom = c.shading_normalizer == Normalizer::Newton ? 3.0 * RsqrtUnit::romBits() : 0.0;
+  m.units.push_back({"shading", P,
+                     2 * field + 3 * normaliser + 3 * dot3 + colour + rom(specRom + srgbRom) +
+                         reg(double(c.shading_latency) * (zReqBits + 3 * (uf + 2))),
+                     specRom + srgbRom + rsqrtRom,
+                     std::string("normal and view fields, 3 normalisers (rsqrt: ") +
+                         (c.shading_normalizer == Normalizer::Newton ? "seed ROM + one Newton step"
+                                                                     : "digit-recurrence sqrt + divider") +
+                         "), 3 dot products, colour multipliers, specular table and sRGB ROM, pipeline registers"});
+  m.zbufferBitsPerPixel = c.zbuffer_bits;
+  return m;
+}
+
+}  // namespace qacc

@@ -1,0 +1,47 @@
+// CostModel: silicon cost of a configuration in gate equivalents (GE, one 2-input NAND),
+// per unit, as a documented function of the configured widths (design §3.2: the cost
+// model turns accuracy into silicon cost). The building blocks are the usual figures of
+// a 1990s standard-cell library (assumptions, docs/HW_MODEL.md "Cost model"):
+//   register bit (D flip-flop)            6 GE
+//   adder / comparator bit (carry-select) 10 GE
+//   multiplier a x b (array/Wallace)       6 GE per partial-product bit + final adder (a+b)
+//   barrel shifter w bits                  2 GE per bit per stage, ceil(log2 w) stages
+//   ROM bit                                0.3 GE
+//   digit recurrence (sqrt, divide), pipelined, one stage per step: (radix - 1) adders of
+//   the step's width and the stage's registers (partial remainder + partial result)
+//   floating multiply-add (setup, IEEE single) = 24x24 multiplier + 3 adders and a
+//   shifter of 48 bits.
+// The Z-buffer memory itself is off-chip (counted in bits, not GE).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "hw_model/config/hw_config.h"
+
+namespace qacc {
+
+struct UnitCost {
+  std::string unit;
+  int copies = 1;        // instances (pipelines, shading units)
+  double ge_each = 0;    // gate equivalents of one instance
+  double rom_bits = 0;   // of which ROM, in bits (already priced into ge_each)
+  std::string basis;     // what was counted
+  double total() const { return ge_each * copies; }
+};
+
+struct CostModel {
+  std::vector<UnitCost> units;
+  double totalGe() const;
+  double zbufferBitsPerPixel = 0;  // off-chip memory per pixel
+  static CostModel of(const HwConfig& cfg);
+  // Building blocks (GE).
+  static double reg(double bits) { return 6.0 * bits; }
+  static double adder(double bits) { return 10.0 * bits; }
+  static double multiplier(double a, double b) { return 6.0 * a * b + adder(a + b); }
+  static double shifter(double bits);
+  static double rom(double bits) { return 0.3 * bits; }
+  static double digitRecurrence(int resultBits, int stepWidth, int radix);
+  static double floatMad() { return multiplier(24, 24) + 3 * adder(48) + shifter(48); }
+};
+
+}  // namespace qacc

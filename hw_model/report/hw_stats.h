@@ -1,0 +1,86 @@
+// HwStats: what an accelerator run measured (`--stats FILE`: JSON, and a CSV alongside).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hw_model/report/cost_model.h"
+#include "hw_model/datapath/fixed_point.h"
+#include "hw_model/config/hw_config.h"
+
+namespace qacc {
+
+// Overflow events per datapath (a value that did not fit its register: saturated or
+// wrapped, never silent), and clamps (depths beyond the depth datapath's range, which
+// are outside the view volume by construction and are clamped by design).
+struct OverflowCounters {
+  OverflowCounter setup, interpolator, sqrt, depth, clip, shading;
+  std::uint64_t depth_clamps = 0;
+  void add(const OverflowCounters& o);
+  std::uint64_t total() const {
+    return setup.events + interpolator.events + sqrt.events + depth.events + clip.events + shading.events;
+  }
+};
+
+struct PixelCounters {
+  std::uint64_t tested = 0;          // issued by traversal
+  std::uint64_t covered = 0;         // a visible point of the primitive (surface or cap)
+  std::uint64_t caps = 0;            // ... of which on a cap
+  std::uint64_t clipped = 0;         // Δ >= 0 (or cap candidate) but every point clipped
+  std::uint64_t depth_rejected = 0;  // covered but failed the Z test
+  std::uint64_t written = 0;         // passed the Z test
+  std::uint64_t clip_passes = 0;     // clip-unit passes
+  void add(const PixelCounters& o);
+};
+
+struct UnitStats {
+  std::string name;
+  std::uint64_t busy = 0, stall = 0, idle = 0;
+  std::uint64_t items = 0;  // primitives or pixels the unit processed
+};
+
+struct HwStats {
+  std::string engine;
+  std::string config;
+  std::string scene;
+  int width = 0, height = 0;
+  int threads = 1;
+  std::uint64_t primitives = 0;
+  std::uint64_t visible_primitives = 0;  // non-empty screen box
+  std::uint64_t facet_primitives = 0;    // through the flat-facet path
+  PixelCounters pixels;
+  OverflowCounters overflow;
+  std::uint64_t cycles = 0;          // hw-cycle only (0 for hw)
+  std::uint64_t fast_forwarded = 0;  // cycles skipped by fast-forward
+  std::vector<UnitStats> units;
+  double clock_mhz = 0;
+  double host_seconds = 0;           // wall time of the render
+  double loop_seconds = 0;           // hw-cycle: wall time of the timing loop alone (one core)
+  double trace_seconds = 0;          // hw-cycle: wall time of the pixel datapath pass (pixel_trace.h)
+
+  CostModel cost;                    // silicon cost of the configuration
+
+  // The run's identity: engine, configuration (name, clock, cost), scene, image size, threads.
+  void describeRun(const std::string& engineName, const HwConfig& cfg, const std::string& sceneName, int w, int h,
+                   int nthreads) {
+    engine = engineName;
+    config = cfg.name;
+    scene = sceneName;
+    width = w;
+    height = h;
+    threads = nthreads;
+    clock_mhz = cfg.clock_mhz;
+    cost = CostModel::of(cfg);
+  }
+  double frameSeconds() const { return clock_mhz > 0 ? double(cycles) / (clock_mhz * 1e6) : 0; }
+  double overdraw() const;  // covered / distinct pixels written
+  std::uint64_t distinct_written = 0;  // pixels showing an object at the end
+
+  std::string toJson() const;
+  std::string toCsv() const;  // one header line + one value line
+  // Writes path (JSON) and path with extension replaced by .csv.
+  void write(const std::string& path) const;
+  std::vector<std::string> summaryLines() const;
+};
+
+}  // namespace qacc

@@ -1,0 +1,382 @@
+#include "modeling/loader/scene_loader.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "modeling/geometry/natural_quadrics.h"
+#include "modeling/loader/object_registry.h"
+#include "modeling/geometry/placed_exact_surface.h"
+
+namespace qacc {
+namespace {
+
+using nlohmann::json;
+
+// ---------------------------------------------------------------------------------------
+// JSON text → json, refusing syntax errors (with line and column) and duplicate keys
+// (nlohmann keeps the last one silently; a strict loader must not).
+
+struct Frame {
+  bool array = false;
+  std::size_t index = 0;       // arrays: elements completed so far
+  std::string key;             // objects: current key
+  std::vector<std::string> keys;
+};
+
+std::string framesPath(const std::vector<Frame>& frames, std::size_t upto) {
+  std::string p;
+  for (std::size_t i = 0; i < upto; ++i)
+    p += "/" + (frames[i].array ? std::to_string(frames[i].index) : jsonPointerKey(frames[i].key));
+  return p;
+}
+
+void lineColumn(const std::string& text, std::size_t byte, std::size_t& line, std::size_t& col) {
+  line = 1;
+  col = 1;
+  const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
+  for (std::size_t i = 0; i < end; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+}
+
+json parseJson(const std::string& text, const std::string& file) {
+  std::vector<Frame> frames;
+  auto afterValue = [&frames]() {
+    if (!frames.empty() && frames.back().array) ++frames.back().index;
+  };
+  json::parser_callback_t cb = [&](int, json::parse_event_t ev, json& parsed) -> bool {
+    switch (ev) {
+      case json::parse_event_t::object_start: frames.push_back(Frame{}); break;
+      case json::parse_event_t::array_start: {
+        Frame f;
+        f.array = true;
+        frames.push_back(f);
+        break;
+      }
+      case json::parse_event_t::key: {
+        Frame& f = frames.back();
+        const std::string k = parsed.get<std::string>();
+        for (const auto& seen : f.keys)
+          if (seen == k)
+            throw SceneError(file, framesPath(frames, frames.size() - 1) + "/" + jsonPointerKey(k),
+                             "duplicate key '" + k + "'");
+        f.keys.push_back(k);
+        f.key = k;
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        frames.pop_back();
+        afterValue();
+        break;
+      case json::parse_event_t::value: afterValue(); break;
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, cb, /*allow_exceptions=*/true, /*ignore_comments=*/false);
+  } catch (const json::out_of_range& e) {
+    // Thrown by the lexer for numbers that overflow a double (e.g. 1e999); the value being
+    // read is the next one of the innermost open object or array.
+    std::string detail = e.what();
+    const auto pos = detail.find("] ");
+    if (pos != std::string::npos) detail = detail.substr(pos + 2);
+    throw SceneError(file, framesPath(frames, frames.size()), "number is not finite (" + detail + ")");
+  } catch (const json::parse_error& e) {
+    std::size_t line, col;
+    lineColumn(text, e.byte, line, col);
+    std::string detail = e.what();
+    const auto pos = detail.find("syntax error");
+    if (pos != std::string::npos) detail = detail.substr(pos);
+    throw SceneError(file, "/", "JSON syntax error at line " + std::to_string(line) + ", column " +
+                                    std::to_string(col) + ": " + detail);
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Sections.
+
+Eigen::Vector3d nonNegativeVec3(const JsonNode& n) {
+  const Eigen::Vector3d v = n.vec3();
+  for (int i = 0; i < 3; ++i)
+    if (v[i] < 0) n[std::size_t(i)].fail("expected a non-negative number");
+  return v;
+}
+
+void readImage(const JsonNode& n, Scene& scene) {
+  if (!n.isObject()) n.fail("expected an object with width, height, background");
+  if (auto w = n.get("width")) scene.width = int(w->integer(1, kMaxImageSide));
+  if (auto h = n.get("height")) scene.height = int(h->integer(1, kMaxImageSide));
+  if (static_cast<long long>(scene.width) * scene.height > kMaxImagePixels)
+    n.fail("image of " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+           " pixels exceeds the limit of " + std::to_string(kMaxImagePixels) + " pixels");
+  if (auto b = n.get("background")) scene.background = b->color();
+  n.finish();
+}
+
+Camera readCamera(const JsonNode& n) {
+  if (!n.isObject()) n.fail("expected an object");
+  Camera c;
+  const std::string type = n.string("type", "perspective");
+  if (type == "perspective") {
+    c.type = Camera::Type::Perspective;
+    if (auto h = n.get("height")) h->fail("'height' is for orthographic cameras; use 'fov_y_deg'");
+    if (auto f = n.get("fov_y_deg")) {
+      c.fov_y_deg = f->number();
+      if (!(c.fov_y_deg > 0 && c.fov_y_deg < 180)) f->fail("field of view must be in (0, 180) degrees");
+    }
+  } else if (type == "orthographic") {
+    c.type = Camera::Type::Orthographic;
+    if (auto f = n.get("fov_y_deg")) f->fail("'fov_y_deg' is for perspective cameras; use 'height'");
+    if (auto h = n.get("height")) c.height = h->positive();
+  } else {
+    n.at("type").fail("unknown camera type '" + type + "' (expected perspective or orthographic)");
+  }
+  c.eye = n.vec3("eye", c.eye);
+  c.target = n.vec3("target", c.target);
+  c.up = n.vec3("up", c.up);
+  const Eigen::Vector3d view = c.target - c.eye;
+  if (!(view.norm() > 0)) (n.has("target") ? n.at("target") : n).fail("target must differ from eye");
+  if (!(c.up.norm() > 0)) n.at("up").fail("up must be a non-zero vector");
+  if (view.normalized().cross(c.up.normalized()).norm() < 1e-9)
+    (n.has("up") ? n.at("up") : n).fail("up is parallel to the view direction");
+  if (auto nn = n.get("near")) c.near = nn->positive();
+  if (auto ff = n.get("far")) c.far = ff->positive();
+  if (!(c.near < c.far)) (n.has("far") ? n.at("far") : n).fail("near must be smaller than far");
+  if (c.type == Camera::Type::Perspective && !(c.near > 0))
+    n.fail("perspective cameras need near > 0");
+  n.finish();
+  return c;
+}
+
+std::vector<Light> readLights(const JsonNode& n) {
+  std::vector<Light> lights;
+  for (const JsonNode& l : n.elements()) {
+    if (!l.isObject()) l.fail("expected a light object");
+    Light light;
+    const std::string type = l.at("type").string();
+    if (type == "directional") {
+      light.type = Light::Type::Directional;
+      const JsonNode d = l.at("direction");
+      light.direction = d.vec3();
+      if (!(light.direction.norm() > 0)) d.fail("direction must be a non-zero vector");
+      light.direction.normalize();
+    } else if (type == "point") {
+      light.type = Light::Type::Point;
+      light.position = l.at("position").vec3();
+    } else if (type == "ambient") {
+      light.type = Light::Type::Ambient;
+      light.color = {0.1, 0.1, 0.1};
+    } else {
+      l.at("type").fail("unknown light type '" + type + "' (expected directional, point or ambient)");
+    }
+    if (auto c = l.get("color")) light.color = nonNegativeVec3(*c);
+    l.finish();
+    lights.push_back(light);
+  }
+  return lights;
+}
+
+void readMaterials(const JsonNode& n, Scene& scene, std::map<std::string, int>& index) {
+  if (!n.isObject()) n.fail("expected an object mapping names to materials");
+  for (auto it = n.json().begin(); it != n.json().end(); ++it) {
+    const std::string name = it.key();
+    const JsonNode m = n.at(name);
+    if (name.empty()) m.fail("material name must not be empty");
+    if (!m.isObject()) m.fail("expected a material object {color, specular, shininess}");
+    Material mat;
+    mat.name = name;
+    if (auto c = m.get("color")) mat.color = c->color();
+    if (auto s = m.get("specular")) mat.specular = s->nonNegative();
+    if (auto s = m.get("shininess")) mat.shininess = s->positive();
+    m.finish();
+    if (name == "default") {
+      scene.materials[0] = mat;  // redefines the default material
+    } else {
+      index[name] = int(scene.materials.size());
+      scene.materials.push_back(mat);
+    }
+  }
+  n.finish();
+}
+
+struct Placement {
+  bool given = false;
+  Eigen::Matrix4d M = Eigen::Matrix4d::Identity();
+};
+
+Placement readTransform(const JsonNode& n) {
+  if (!n.isObject()) n.fail("expected an object {translate, rotate_deg, scale}");
+  Placement t;
+  t.given = true;
+  const Eigen::Vector3d translate = n.vec3("translate", Eigen::Vector3d::Zero());
+  const Eigen::Vector3d rotate = n.vec3("rotate_deg", Eigen::Vector3d::Zero());
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  if (auto s = n.get("scale")) {
+    if (s->json().is_number()) {
+      const double k = s->number();
+      if (k == 0) s->fail("scale must be non-zero (the transform would be singular)");
+      scale = Eigen::Vector3d::Constant(k);
+    } else {
+      scale = s->vec3();
+      for (int i = 0; i < 3; ++i)
+        if (scale[i] == 0) (*s)[std::size_t(i)].fail("scale must be non-zero (the transform would be singular)");
+    }
+    const double det = scale.x() * scale.y() * scale.z();
+    if (!(std::isfinite(det) && det != 0) || !std::isfinite(1.0 / det))
+      s->fail("scale makes the transform singular or non-finite");
+  }
+  n.finish();
+  t.M = placement(translate, rotate, scale);
+  if (!t.M.allFinite() || !t.M.inverse().allFinite()) n.fail("transform is singular or non-finite");
+  return t;
+}
+
+std::vector<HalfSpace> readClip(const JsonNode& n) {
+  std::vector<HalfSpace> out;
+  for (const JsonNode& c : n.elements()) {
+    const Eigen::Vector4d p = c.vec4();
+    if (p.head<3>().cwiseAbs().maxCoeff() == 0.0) c.fail("clip plane [a, b, c, d] needs a non-zero normal (a, b, c)");
+    out.emplace_back(p);
+  }
+  return out;
+}
+
+bool primitiveFinite(const Primitive& p) {
+  if (!p.quadric.Q.allFinite()) return false;
+  for (const auto& h : p.clip)
+    if (!h.p.allFinite()) return false;
+  return true;
+}
+
+void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::map<std::string, int>& materials,
+                const std::string& directory) {
+  if (!o.isObject()) o.fail("expected an object with a \"type\"");
+  const JsonNode typeNode = o.at("type");
+  const std::string type = typeNode.string();
+  const ObjectBuilder* builder = findObjectBuilder(type);
+  if (!builder) {
+    std::string known;
+    for (const auto& t : objectTypes()) known += (known.empty() ? "" : ", ") + t;
+    typeNode.fail("unknown object type '" + type + "' (known types: " + known + ")");
+  }
+  if (auto nm = o.get("name")) nm->string();
+  int material = 0;
+  bool has_material = false;
+  if (auto m = o.get("material")) {
+    const std::string name = m->string();
+    if (name != "default") {
+      auto it = materials.find(name);
+      if (it == materials.end()) m->fail("unknown material '" + name + "'");
+      material = it->second;
+    }
+    has_material = true;
+  }
+  const bool solid = o.boolean("solid", false);
+  Placement transform;
+  if (auto t = o.get("transform")) transform = readTransform(*t);
+  std::vector<HalfSpace> clip;
+  if (auto c = o.get("clip")) clip = readClip(*c);
+
+  const std::size_t exactBefore = scene.exact_surfaces.size();
+  ObjectContext ctx{scene, directory, material, solid, has_material, {}};
+  std::vector<Primitive> prims;
+  try {
+    prims = (*builder)(o, ctx);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& e) {
+    o.fail(std::string("cannot build ") + type + ": " + e.what());
+  }
+  o.finish();
+
+  SceneObject so;
+  so.type = type;
+  so.first = scene.primitives.size();
+  so.count = prims.size();
+  so.material = material;
+  so.note = ctx.note;
+  if (scene.exact_surfaces.size() > exactBefore) {
+    // The builder gave the object's true surface (exact_surface.h): place and clip it like the pieces.
+    so.exact_surface = int(scene.exact_surfaces.size()) - 1;
+    auto& es = scene.exact_surfaces.back();
+    if (transform.given || !clip.empty())
+      es = std::make_shared<PlacedExactSurface>(es, transform.given ? transform.M : Eigen::Matrix4d::Identity(), clip);
+  }
+  for (Primitive& p : prims) {
+    p.clip.insert(p.clip.end(), clip.begin(), clip.end());
+    if (transform.given) p = p.transformed(transform.M);
+    if (p.material == 0) p.material = material;
+    p.solid = p.solid || solid;
+    p.object = int(index);
+    if (!primitiveFinite(p)) o.fail("object produces non-finite coefficients (sizes or scales too extreme)");
+    if (p.quadric.Q.topLeftCorner<3, 4>().cwiseAbs().maxCoeff() == 0.0)
+      o.fail("object degenerates to a constant (sizes or scales too extreme for double precision)");
+    scene.primitives.push_back(std::move(p));
+  }
+  scene.objects.push_back(so);
+}
+
+std::string stem(const std::string& file) {
+  std::string base = file;
+  const auto slash = base.find_last_of('/');
+  if (slash != std::string::npos) base = base.substr(slash + 1);
+  const auto dot = base.find_last_of('.');
+  if (dot != std::string::npos && dot > 0) base = base.substr(0, dot);
+  return base.empty() ? "scene" : base;
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& file, const std::string& directory) {
+  const json doc = parseJson(text, file);
+  const JsonNode root(doc, "", std::make_shared<const std::string>(file));
+  if (!root.isObject()) root.fail("a scene must be a JSON object");
+
+  Scene scene;
+  scene.file = file;
+  scene.name = stem(file);
+  scene.materials = {Material{}};
+
+  const JsonNode format = root.at("format");
+  if (format.string() != "qacc-scene/1")
+    format.fail("unsupported format '" + format.string() + "' (expected \"qacc-scene/1\")");
+  if (auto n = root.get("name")) scene.name = n->string();
+  if (auto d = root.get("description")) d->string();
+  if (auto img = root.get("image")) readImage(*img, scene);
+  scene.camera = readCamera(root.at("camera"));
+  if (auto l = root.get("lights")) scene.lights = readLights(*l);
+  if (scene.lights.empty()) scene.lights = Scene::defaultLights(scene.camera);
+
+  std::map<std::string, int> materials;
+  if (auto m = root.get("materials")) readMaterials(*m, scene, materials);
+
+  const JsonNode objects = root.at("objects");
+  const std::size_t n = objects.size();
+  for (std::size_t i = 0; i < n; ++i) readObject(objects[i], i, scene, materials, directory);
+  root.finish();
+  return scene;
+}
+
+Scene loadScene(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path, "/", std::string("cannot open scene file: ") + std::strerror(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw SceneError(path, "/", "cannot read scene file");
+  std::string directory = ".";
+  const auto slash = path.find_last_of('/');
+  if (slash != std::string::npos) directory = slash == 0 ? "/" : path.substr(0, slash);
+  return parseScene(ss.str(), path, directory);
+}
+
+}  // namespace qacc

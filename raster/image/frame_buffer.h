@@ -1,0 +1,32 @@
+// FrameBuffer: what every renderer produces — colour (8-bit sRGB RGB), window depth
+// (+inf where nothing was hit) and the object / primitive index per pixel (-1 = none).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "raster/image/image.h"
+
+namespace qacc {
+
+struct FrameBuffer {
+  int width = 0;
+  int height = 0;
+  Image8 color;                      // 3 channels, sRGB
+  std::vector<double> depth;         // window z in [0, 1], +inf = background
+  std::vector<std::int32_t> object;  // scene object index, -1 = background
+  std::vector<std::int32_t> primitive;  // primitive index, -1 = background
+
+  FrameBuffer() = default;
+  FrameBuffer(int w, int h, const std::array<std::uint8_t, 3>& background);
+
+  std::size_t pixels() const { return std::size_t(width) * std::size_t(height); }
+  std::size_t covered() const;
+  // 16-bit id image: object index + 1 (0 = nothing); ids above 65534 saturate.
+  Image16 idImage() const;
+  // Window depth as float (+inf where nothing was hit).
+  ImageF depthImage() const;
+};
+
+}  // namespace qacc

@@ -1,0 +1,63 @@
+// Facet renderer through Mesa's off-screen OSMesa (design §3.3): the triangles of a
+// tessellated scene drawn by gallium llvmpipe (GALLIUM_DRIVER=llvmpipe is set before the
+// context is created), into a float RGBA colour buffer with a 24-bit depth buffer, with the
+// scene camera's own matrices (Camera::view, Camera::projection: the same world → window map
+// as the other renderers) and the lights and shading function of raster/shading.h:
+//  - Gouraud (the 1990s way): shadeLinear() evaluated at every vertex on the host, the
+//    linear radiance interpolated across the triangle by GL;
+//  - per-pixel: the same formula (ambient + Lambert + Blinn-Phong, two-sided) in a GLSL
+//    fragment shader from interpolated position and normal (needs GLSL; when the context has
+//    none the result says so and falls back to Gouraud).
+// Linear radiance is read back after glFinish and encoded to 8-bit sRGB on the host, rows
+// flipped (GL's window y is up). A second pass draws every triangle flat with its primitive
+// index + 1 as colour (lighting off) for the object / primitive id buffers; depth comes from
+// the 24-bit depth buffer (window depth in [0, 1], +inf where nothing was drawn).
+//
+// The file osmesa_renderer.cpp is built only with OSMesa (CMake QACC_WITH_OSMESA, which
+// defines QACC_HAVE_OSMESA); test facetRendererAvailable() before calling renderFacets.
+#pragma once
+#include <string>
+
+#include "modeling/scene/scene.h"
+#include "modeling/tessellation/tessellation.h"
+#include "raster/pixel/facet_shading.h"
+#include "raster/image/frame_buffer.h"
+
+namespace qacc {
+
+struct FacetRenderOptions {
+  FacetShading shading = FacetShading::Gouraud;
+  int threads = 0;  // llvmpipe threads (LP_NUM_THREADS, set before the first context); <= 0: Mesa's default
+};
+
+struct FacetRenderResult {
+  FrameBuffer fb;
+  std::string gl_renderer;  // GL_RENDERER
+  std::string gl_version;   // GL_VERSION
+  std::string glsl_version; // GL_SHADING_LANGUAGE_VERSION ("" when none)
+  FacetShading shading_used = FacetShading::Gouraud;
+  std::string note;         // e.g. why per-pixel shading fell back to Gouraud
+  std::size_t triangles = 0;
+  double setup_ms = 0;      // context creation, shading of vertices, array set-up
+  double draw_ms = 0;       // colour pass: draw calls + glFinish
+  double readback_ms = 0;   // colour + depth read back, sRGB encoding
+  double id_pass_ms = 0;    // id pass: draw + glFinish + read back
+  double totalMs() const { return setup_ms + draw_ms + readback_ms + id_pass_ms; }
+};
+
+#ifdef QACC_HAVE_OSMESA
+constexpr bool facetRendererAvailable() { return true; }
+#else
+constexpr bool facetRendererAvailable() { return false; }
+#endif
+// Message for builds without OSMesa.
+inline const char* facetRendererMissingMessage() {
+  return "the 'facets' engine needs OSMesa: this qacc was built without it (install libosmesa6-dev "
+         "and reconfigure with -DQACC_WITH_OSMESA=ON)";
+}
+
+// Renders `mesh` (from tessellateScene) with the scene's camera, lights, materials and image
+// size. Throws std::runtime_error when OSMesa cannot create a context.
+FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, const FacetRenderOptions& options);
+
+}  // namespace qacc

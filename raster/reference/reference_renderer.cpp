@@ -1,0 +1,165 @@
+#include "raster/reference/reference_renderer.h"
+
+#include <omp.h>
+
+#include <chrono>
+#include <limits>
+
+#include "raster/pixel/pixel_hit.h"
+#include "raster/pixel/shading.h"
+#include "raster/pixel/tile_binner.h"
+#include "raster/pixel/window_primitive.h"
+
+namespace qacc {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Eigen::Vector3d dehom(const Eigen::Vector4d& X) { return X.head<3>() / X[3]; }
+
+// One thing to draw, in scene order: a primitive or an object's exact surface.
+struct Item {
+  int primitive = -1;  // index into Scene::primitives (for an exact surface: the object's first, or -1)
+  int exact = -1;      // index into Scene::exact_surfaces, or -1
+  int object = 0;
+  int material = 0;
+  ScreenBox box;
+};
+
+}  // namespace
+
+FrameBuffer renderReference(const Scene& scene, int threads, ReferenceStats* stats) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int W = scene.width, H = scene.height;
+  const int nthreads = threads > 0 ? threads : omp_get_max_threads();
+  const Eigen::Matrix4d M = scene.camera.worldToWindow(W, H);
+  const Eigen::Matrix4d Minv = M.inverse();
+  const int nprim = int(scene.primitives.size());
+
+  std::vector<WindowPrimitive> win(static_cast<std::size_t>(nprim));
+#pragma omp parallel for schedule(dynamic, 16) num_threads(nthreads)
+  for (int i = 0; i < nprim; ++i) {
+    const Primitive& p = scene.primitives[std::size_t(i)];
+    const bool replaced = p.object >= 0 && p.object < int(scene.objects.size()) &&
+                          scene.objects[std::size_t(p.object)].exact_surface >= 0;
+    if (!replaced) win[std::size_t(i)] = toWindow(p, i, Minv, W, H);
+  }
+
+  // Draw items in scene order; an exact surface takes the place of its object's pieces.
+  std::vector<Item> items;
+  std::vector<bool> exactDone(scene.exact_surfaces.size(), false);
+  auto addExact = [&](int obj) {
+    const SceneObject& o = scene.objects[std::size_t(obj)];
+    const int e = o.exact_surface;
+    if (e < 0 || e >= int(scene.exact_surfaces.size()) || exactDone[std::size_t(e)]) return;
+    exactDone[std::size_t(e)] = true;
+    Item it;
+    it.exact = e;
+    it.primitive = o.count > 0 ? int(o.first) : -1;
+    it.object = obj;
+    it.material = o.material;
+    it.box = worldBoxToScreen(scene.exact_surfaces[std::size_t(e)]->bounds(), M, W, H);
+    items.push_back(it);
+  };
+  for (std::size_t obj = 0; obj < scene.objects.size(); ++obj)
+    if (scene.objects[obj].count == 0) addExact(int(obj));
+  for (int i = 0; i < nprim; ++i) {
+    const Primitive& p = scene.primitives[std::size_t(i)];
+    if (p.object >= 0 && p.object < int(scene.objects.size()) && scene.objects[std::size_t(p.object)].exact_surface >= 0) {
+      addExact(p.object);
+      continue;
+    }
+    const WindowPrimitive& w = win[std::size_t(i)];
+    if (w.box.empty()) continue;
+    Item it;
+    it.primitive = i;
+    it.object = p.object;
+    it.material = p.material;
+    it.box = w.box;
+    items.push_back(it);
+  }
+
+  TileBinner bins(W, H);
+  for (int k = 0; k < int(items.size()); ++k) bins.add(k, items[std::size_t(k)].box);
+  if (stats) stats->setup_ms = msSince(t0);
+
+  const auto t1 = std::chrono::steady_clock::now();
+  FrameBuffer fb(W, H, toSrgb8(scene.background));
+  std::vector<int> itemAt(fb.pixels(), -1);
+  std::vector<int> capAt(fb.pixels(), -1);
+  std::vector<Eigen::Vector3d> exactNormal;
+  if (!scene.exact_surfaces.empty()) exactNormal.assign(fb.pixels(), Eigen::Vector3d::Zero());
+  long long tests = 0;
+
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : tests)
+  for (int t = 0; t < bins.tiles(); ++t) {
+    const ScreenBox tile = bins.tile(t);
+    for (int k : bins.bin(t)) {
+      const Item& it = items[std::size_t(k)];
+      const ScreenBox b = it.box.intersect(tile);
+      for (int y = b.y0; y < b.y1; ++y) {
+        for (int x = b.x0; x < b.x1; ++x) {
+          ++tests;
+          const double px = x + 0.5, py = y + 0.5;
+          const std::size_t pix = std::size_t(y) * W + x;
+          if (it.exact >= 0) {
+            const Eigen::Vector3d p0 = dehom(Minv * Eigen::Vector4d(px, py, 0, 1));
+            const Eigen::Vector3d p1 = dehom(Minv * Eigen::Vector4d(px, py, 1, 1));
+            ExactHit eh;
+            if (!scene.exact_surfaces[std::size_t(it.exact)]->intersect(p0, p1, eh)) continue;
+            const Eigen::Vector4d Xw = M * (p0 + eh.t * (p1 - p0)).homogeneous();
+            const double z = Xw[2] / Xw[3];
+            if (z < 0 || z > 1 || !(z < fb.depth[pix])) continue;
+            fb.depth[pix] = z;
+            itemAt[pix] = k;
+            capAt[pix] = -1;
+            exactNormal[pix] = eh.normal;
+          } else {
+            PixelHit h;
+            if (!pixelHit(win[std::size_t(it.primitive)], px, py, h) || !(h.z < fb.depth[pix])) continue;
+            fb.depth[pix] = h.z;
+            itemAt[pix] = k;
+            capAt[pix] = h.cap;
+          }
+        }
+      }
+    }
+  }
+  if (stats) {
+    stats->visibility_ms = msSince(t1);
+    stats->pixel_tests = tests;
+  }
+
+  const auto t2 = std::chrono::steady_clock::now();
+#pragma omp parallel for schedule(dynamic, 4) num_threads(nthreads)
+  for (int y = 0; y < H; ++y) {
+    for (int x = 0; x < W; ++x) {
+      const std::size_t pix = std::size_t(y) * W + x;
+      const int k = itemAt[pix];
+      if (k < 0) continue;
+      const Item& it = items[std::size_t(k)];
+      const Eigen::Vector3d P = dehom(Minv * Eigen::Vector4d(x + 0.5, y + 0.5, fb.depth[pix], 1));
+      Eigen::Vector3d n;
+      if (it.exact >= 0) {
+        n = exactNormal[pix];
+      } else {
+        const Primitive& prim = scene.primitives[std::size_t(it.primitive)];
+        n = capAt[pix] >= 0 ? Eigen::Vector3d(prim.clip[std::size_t(capAt[pix])].p.head<3>())
+                            : prim.quadric.gradient(P);
+      }
+      const int mi = it.material >= 0 && it.material < int(scene.materials.size()) ? it.material : 0;
+      const Material fallback;
+      const Material& mat = scene.materials.empty() ? fallback : scene.materials[std::size_t(mi)];
+      const auto rgb = toSrgb8(shadeLinear(scene, mat, P, n));
+      for (int c = 0; c < 3; ++c) fb.color.data[pix * 3 + c] = rgb[std::size_t(c)];
+      fb.object[pix] = it.object;
+      fb.primitive[pix] = it.primitive;
+    }
+  }
+  if (stats) stats->shading_ms = msSince(t2);
+  return fb;
+}
+
+}  // namespace qacc

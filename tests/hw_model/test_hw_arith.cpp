@@ -1,0 +1,209 @@
+// Accelerator arithmetic: square-root extractor, interpolators, fixed-point helpers, shading registers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "hw_model/datapath/fixed_point.h"
+#include "hw_model/config/hw_config.h"
+#include "hw_model/datapath/linear_interpolator.h"
+#include "hw_model/datapath/quadratic_interpolator.h"
+#include "hw_model/engines/frame_setup.h"
+#include "hw_model/datapath/reciprocal_sqrt.h"
+#include "hw_model/timing/shading_unit.h"
+#include "hw_model/datapath/sqrt_extractor.h"
+#include "modeling/loader/scene_loader.h"
+
+using namespace qacc;
+
+namespace {
+std::uint64_t isqrtRef(std::uint64_t n) {  // independent: binary search
+  std::uint64_t lo = 0, hi = std::min<std::uint64_t>(n, 0xFFFFFFFFull) + 1;
+  while (hi - lo > 1) {
+    const std::uint64_t mid = (lo + hi) / 2;
+    if ((unsigned __int128)mid * mid <= n) lo = mid;
+    else hi = mid;
+  }
+  return lo;
+}
+}  // namespace
+
+TEST(SqrtUnit, ExhaustiveSmallWidthsBothRadices) {
+  for (int bits : {2, 4, 8, 12, 16}) {
+    for (std::uint64_t n = 0; n < (std::uint64_t(1) << bits); ++n) {
+      const std::uint64_t want = isqrtRef(n);
+      ASSERT_EQ(SqrtUnit::recurrence(n, bits, 2), want) << "radix 2, n=" << n;
+      ASSERT_EQ(SqrtUnit::recurrence(n, bits, 4), want) << "radix 4, n=" << n;
+      ASSERT_EQ(SqrtUnit::compute(n), want) << "fast path, n=" << n;
+    }
+  }
+}
+
+TEST(SqrtUnit, RandomLargeOperands) {
+  std::mt19937_64 rng(12345);
+  for (int i = 0; i < 200000; ++i) {
+    const int bits = 17 + int(rng() % 64);  // 17..80 bits (the widest Δ datapath)
+    unsigned __int128 n = ((unsigned __int128)rng() << 64) | rng();
+    n &= (((unsigned __int128)1) << bits) - 1;
+    if (i % 7 == 0) {  // perfect squares and their neighbours
+      const std::uint64_t r = std::uint64_t(n >> (bits / 2 + 1)) + 1;
+      n = (unsigned __int128)r * r - (i % 3 == 0 ? 1 : 0);
+    }
+    const std::uint64_t q = SqrtUnit::compute(n);
+    ASSERT_TRUE((unsigned __int128)q * q <= n && (unsigned __int128)(q + 1) * (q + 1) > n);
+    ASSERT_EQ(SqrtUnit::recurrence(n, bits, 2), q);
+    ASSERT_EQ(SqrtUnit::recurrence(n, bits, 4), q);
+  }
+}
+
+TEST(SqrtUnit, LatencyFromWidthAndRadix) {
+  EXPECT_EQ(SqrtUnit::latency(64, 2), 33);
+  EXPECT_EQ(SqrtUnit::latency(64, 4), 17);
+  HwConfig c;
+  c.delta_bits = 64;
+  c.sqrt_radix = 4;
+  EXPECT_EQ(c.sqrtLatency(), 17);
+}
+
+TEST(QuadraticInterpolator, ForwardDifferencesEqualDirectEvaluationOver4096Pixels) {
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 50; ++trial) {
+    auto r = [&](int bits) { return i128(std::int64_t(rng() % (std::uint64_t(1) << bits)) - (std::int64_t(1) << (bits - 1))); };
+    QuadraticCoefficients k{r(40), r(44), r(40), r(56), r(56), r(62)};
+    QuadraticInterpolator q(k, 24, 120);
+    const int v = int(rng() % 4096);
+    q.start(0, v);
+    for (int u = 0; u < 4096; ++u) {
+      ASSERT_EQ(q.raw(), q.direct(u, v)) << "u=" << u;
+      // and the closed form written out independently
+      const i128 U = u, V = v;
+      ASSERT_EQ(q.raw(), k.A * U * U + k.B * U * V + k.C * V * V + k.D * U + k.E * V + k.F);
+      q.stepRight();
+    }
+  }
+}
+
+TEST(LinearInterpolator, StepsEqualDirect) {
+  LinearCoefficients k{123456789, -987654321, 55555};
+  LinearInterpolator l(k);
+  l.start(10, 20);
+  for (int u = 10; u < 4106; ++u) {
+    ASSERT_EQ(l.raw(), i128(123456789) * u - i128(987654321) * 20 + 55555);
+    l.stepRight();
+  }
+}
+
+TEST(QuadraticInterpolator, AccumulatorOverflowIsCountedAndSaturates) {
+  QuadraticCoefficients k{0, 0, 0, 0, 0, (i128(1) << 40)};
+  QuadraticInterpolator q(k, 0, 32);
+  q.start(0, 0);
+  OverflowCounter ovf;
+  EXPECT_EQ(q.output(OverflowMode::Saturate, ovf), (i128(1) << 31) - 1);
+  EXPECT_EQ(ovf.events, 1u);
+}
+
+TEST(FixedPoint, RoundingModes) {
+  EXPECT_EQ(shiftRound(5, 1, Rounding::Truncate), 2);
+  EXPECT_EQ(shiftRound(5, 1, Rounding::Nearest), 3);
+  EXPECT_EQ(shiftRound(5, 1, Rounding::NearestEven), 2);
+  EXPECT_EQ(shiftRound(7, 1, Rounding::NearestEven), 4);
+  EXPECT_EQ(shiftRound(-5, 1, Rounding::Truncate), -3);  // floor
+  EXPECT_EQ(divRound(7, 2, Rounding::Truncate), 3);
+  EXPECT_EQ(divRound(-7, 2, Rounding::Truncate), -3);
+  EXPECT_EQ(divRound(-7, 2, Rounding::Nearest), -4);
+  EXPECT_EQ(divRound(i128(1) << 100, i128(3), Rounding::Truncate), (i128(1) << 100) / 3);
+}
+
+TEST(FixedPoint, QuantizeIsSymmetricAndCountsOverflow) {
+  OverflowCounter ovf;
+  for (double v : {0.5, 1.5, 2.5, -3.25, 1e-3, 12345.678}) {
+    EXPECT_EQ(quantize(-v, 10, 40, OverflowMode::Saturate, ovf), -quantize(v, 10, 40, OverflowMode::Saturate, ovf));
+  }
+  EXPECT_EQ(ovf.events, 0u);
+  EXPECT_EQ(quantize(1000.0, 0, 8, OverflowMode::Saturate, ovf), 127);
+  EXPECT_EQ(ovf.events, 1u);
+  EXPECT_EQ(quantize(200.0, 0, 8, OverflowMode::Wrap, ovf), 200 - 256);
+  EXPECT_EQ(ovf.events, 2u);
+  EXPECT_EQ(quantize(std::nan(""), 0, 8, OverflowMode::Saturate, ovf), 0);
+  EXPECT_EQ(ovf.events, 3u);
+}
+
+TEST(HwConfig, ParsesAndRefusesBadKeys) {
+  const HwConfig c = parseHwConfig(R"({"pipelines": 4, "depth_variant": "reciprocal", "rounding": "truncate"})", "t.json");
+  EXPECT_EQ(c.pipelines, 4);
+  EXPECT_EQ(c.depth_variant, DepthVariant::Reciprocal);
+  EXPECT_EQ(c.rounding, Rounding::Truncate);
+  EXPECT_THROW(parseHwConfig(R"({"pipelinez": 4})", "t.json"), std::invalid_argument);
+  EXPECT_THROW(parseHwConfig(R"({"pipelines": 0})", "t.json"), std::invalid_argument);
+  EXPECT_THROW(parseHwConfig(R"({"pipelines": 2.5})", "t.json"), std::invalid_argument);
+  EXPECT_THROW(parseHwConfig(R"({"shading_normalizer": "fast"})", "t.json"), std::invalid_argument);
+  EXPECT_THROW(parseHwConfig(R"({"depth_variant": 1})", "t.json"), std::invalid_argument);
+  EXPECT_EQ(parseHwConfig(R"({"shading_normalizer": "recurrence"})", "t.json").shading_normalizer,
+            Normalizer::Recurrence);
+  // round trip
+  const HwConfig d = parseHwConfig(hwConfigToJson(c), "rt.json");
+  EXPECT_EQ(hwConfigToJson(d), hwConfigToJson(c));
+}
+
+TEST(HwConfig, ShippedConfigurationsLoad) {
+  for (const char* n : {"default", "minimal", "wide"}) {
+    const HwConfig c = loadHwConfig(std::string(QACC_SOURCE_DIR) + "/hw_model/configs/" + n + ".json");
+    EXPECT_EQ(c.name, n);
+  }
+  // the shipped default is the built-in default
+  HwConfig d = loadHwConfig(std::string(QACC_SOURCE_DIR) + "/hw_model/configs/default.json");
+  EXPECT_EQ(hwConfigToJson(d), hwConfigToJson(HwConfig()));
+}
+
+// The shading unit computes with 64-bit registers where the widths allow; the 128-bit
+// datapath must give the same colour for every input (surface points at any depth, caps).
+TEST(ShadingUnit, SixtyFourBitRegistersGiveTheSameBitsAsOneHundredTwentyEight) {
+  for (const char* n : {"default", "minimal", "wide"}) {
+    const HwConfig cfg = loadHwConfig(std::string(QACC_SOURCE_DIR) + "/hw_model/configs/" + n + ".json");
+    Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json");
+    scene.width = 320;
+    scene.height = 240;
+    const HwSceneSetup hs = HwSceneSetup::build(scene, cfg, 1);
+    std::mt19937_64 rng(7);
+    int compared = 0;
+    for (const PrimitiveSetup& s : hs.setups) {
+      if (!s.visible) continue;
+      std::uniform_int_distribution<int> U(0, s.x1 - s.x0 - 1), V(0, s.y1 - s.y0 - 1);
+      std::uniform_int_distribution<long long> Z(0, (1LL << cfg.depth_frac_bits));
+      for (int i = 0; i < 400; ++i) {
+        const int u = U(rng), v = V(rng);
+        const i128 z = Z(rng);
+        const int cap = s.planes.empty() || i % 4 ? -1 : int(i % s.planes.size());
+        OverflowCounter ovf;
+        const auto narrow = ShadingUnit::shade(s, hs.lighting, cfg, u, v, z, cap, ovf);
+        const auto wide = ShadingUnit::shadeWide(s, hs.lighting, cfg, u, v, z, cap);
+        ASSERT_EQ(narrow, wide) << n << " primitive " << s.index << " at " << u << "," << v;
+        ++compared;
+      }
+    }
+    EXPECT_GT(compared, 1000) << n;
+  }
+}
+
+// The shading normaliser's reciprocal square root (seed ROM + one Newton step) against
+// the exact value, exhaustively over a range of small inputs and on random large ones.
+TEST(RsqrtUnit, NewtonStepFromTheSeedRomIsAccurateTo18Bits) {
+  const int P = RsqrtUnit::kPrecision;
+  auto relErr = [&](unsigned __int128 L) {
+    const RsqrtUnit::Result r = RsqrtUnit::compute(L);
+    const double exact = 1.0 / std::sqrt(double(L));
+    const double got = std::ldexp(double(r.y), -(2 * P + 1 + r.k));
+    return std::fabs(got - exact) / exact;
+  };
+  double worst = 0;
+  for (std::uint64_t L = 1; L < (1u << 20); ++L) worst = std::max(worst, relErr(L));
+  std::mt19937_64 rng(11);
+  for (int i = 0; i < 200000; ++i) {
+    const int bits = 20 + int(rng() % 100);
+    const unsigned __int128 L = (((unsigned __int128)rng() << 64) | rng()) >> (128 - bits);
+    if (L > 0) worst = std::max(worst, relErr(L));
+  }
+  EXPECT_LT(worst, std::ldexp(1.0, -18));
+  EXPECT_GT(worst, 0.0);  // an approximation, not an exact unit
+  EXPECT_EQ(RsqrtUnit::compute(0).y, 0);
+}

@@ -1,0 +1,150 @@
+// Accelerator engines: hw == hw-cycle bit for bit, thread-count independence, the cycle
+// count of a lone primitive, back-pressure, and accuracy against the reference.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "hw_model/report/accuracy_report.h"
+#include "hw_model/engines/cycle_engine.h"
+#include "hw_model/engines/functional_engine.h"
+#include "hw_model/timing/host_interface_unit.h"
+#include "hw_model/timing/setup_unit.h"
+#include "modeling/geometry/natural_quadrics.h"
+#include "modeling/loader/scene_loader.h"
+#include "raster/reference/reference_renderer.h"
+
+using namespace qacc;
+namespace fs = std::filesystem;
+
+namespace {
+
+void expectIdentical(const FrameBuffer& a, const FrameBuffer& b, const std::string& what) {
+  ASSERT_EQ(a.width, b.width);
+  ASSERT_EQ(a.height, b.height);
+  EXPECT_TRUE(a.color.data == b.color.data) << what << ": colour differs";
+  EXPECT_TRUE(a.object == b.object) << what << ": object ids differ";
+  EXPECT_TRUE(a.primitive == b.primitive) << what << ": primitive ids differ";
+  EXPECT_TRUE(a.depth == b.depth) << what << ": depth differs";
+}
+
+Scene loneSphereScene(int w, int h) {
+  Scene s;
+  s.name = "lone-sphere";
+  s.width = w;
+  s.height = h;
+  s.camera.eye = {0, 0, 6};
+  s.camera.target = {0, 0, 0};
+  s.lights = Scene::defaultLights(s.camera);
+  s.materials.emplace_back();
+  s.primitives.push_back(makeSphere({0, 0, 0}, 1.0));
+  s.objects.push_back({"sphere", 0, 1, 0, -1, {}});
+  return s;
+}
+
+std::uint64_t totalStalls(const HwStats& st) {
+  std::uint64_t n = 0;
+  for (const auto& u : st.units) n += u.stall;
+  return n;
+}
+
+}  // namespace
+
+TEST(HwEngines, BitIdenticalOnAllScenesAndThreadCounts) {
+  const fs::path dir = fs::path(QACC_SOURCE_DIR) / "scenes";
+  int count = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() != ".json") continue;
+    Scene scene = loadScene(e.path().string());
+    // reduced size keeps the suite fast; the arithmetic is the same at any size
+    scene.width = 160;
+    scene.height = 120;
+    HwConfig cfg;
+    const HwRender a = renderHw(scene, cfg, 1);
+    const HwRender b = renderHw(scene, cfg, 2);
+    const HwRender c = renderHwCycle(scene, cfg, 2);
+    expectIdentical(a.fb, b.fb, e.path().filename().string() + " hw 1 vs 2 threads");
+    expectIdentical(a.fb, c.fb, e.path().filename().string() + " hw vs hw-cycle");
+    EXPECT_EQ(a.stats.pixels.tested, c.stats.pixels.tested);
+    EXPECT_EQ(a.stats.pixels.covered, c.stats.pixels.covered);
+    EXPECT_EQ(a.stats.pixels.written, c.stats.pixels.written);
+    EXPECT_GT(c.stats.cycles, 0u);
+    ++count;
+  }
+  EXPECT_GE(count, 3);
+}
+
+TEST(HwEngines, MinimalAndWideConfigurationsAlsoBitIdentical) {
+  Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json");
+  scene.width = 200;
+  scene.height = 150;
+  for (const char* n : {"minimal", "wide"}) {
+    const HwConfig cfg = loadHwConfig(std::string(QACC_SOURCE_DIR) + "/hw_model/configs/" + n + ".json");
+    expectIdentical(renderHw(scene, cfg, 2).fb, renderHwCycle(scene, cfg, 1).fb, n);
+  }
+}
+
+TEST(HwEngines, LonePrimitiveCycleCountMatchesAnalyticExpectation) {
+  const Scene scene = loneSphereScene(256, 256);
+  HwConfig cfg;
+  cfg.pipelines = 1;
+  cfg.pixel_fifo_depth = 64;
+  const HwRender r = renderHwCycle(scene, cfg, 1);
+  OverflowCounter ovf;
+  const PrimitiveSetup s = SetupUnit::run(scene, 0, scene.camera.worldToWindow(256, 256),
+                                          scene.camera.worldToWindow(256, 256).inverse(), cfg, ovf);
+  // host transfer + setup + one pixel per cycle (one clip pass: 0 planes, surface) +
+  // the pipeline, Z-buffer and shading latencies; each of the 5 FIFO hops costs a cycle,
+  // the traversal's span solve one more.
+  const std::uint64_t host = std::uint64_t(HostInterface::transferCycles(s.descriptorWords, cfg));
+  const std::uint64_t setup = std::uint64_t(SetupUnit::cycles(s, cfg));
+  const std::uint64_t expected = host + setup + r.stats.pixels.tested + std::uint64_t(cfg.pixelPipelineLatency()) +
+                                 std::uint64_t(cfg.zbuffer_read_latency) + std::uint64_t(cfg.shading_latency) + 5 + 1;
+  const double diff = double(r.stats.cycles) - double(expected);
+  EXPECT_LE(std::abs(diff), 4.0) << "cycles " << r.stats.cycles << " expected " << expected;
+  // With P = 2 the pixel part halves (about: rows of odd length waste a slot).
+  cfg.pipelines = 2;
+  const HwRender r2 = renderHwCycle(scene, cfg, 1);
+  const double pixelPart2 = double(r2.stats.cycles) - double(expected - r.stats.pixels.tested);
+  EXPECT_NEAR(pixelPart2, double(r.stats.pixels.tested) / 2.0, 0.02 * double(r.stats.pixels.tested));
+}
+
+TEST(HwEngines, BackPressureStallsButSameImage) {
+  Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json");
+  scene.width = 200;
+  scene.height = 150;
+  HwConfig base;
+  const HwRender ref = renderHw(scene, base, 2);
+  const HwRender fast = renderHwCycle(scene, base, 1);
+  HwConfig tight = base;
+  tight.pixel_fifo_depth = 1;
+  tight.host_fifo_depth = 1;
+  tight.setup_fifo_depth = 1;
+  tight.zbuffer_banks = 1;
+  tight.shading_cycles_per_pixel = 3;
+  const HwRender slow = renderHwCycle(scene, tight, 1);
+  expectIdentical(ref.fb, slow.fb, "tight FIFOs, one bank");
+  EXPECT_GT(totalStalls(slow.stats), totalStalls(fast.stats));
+  EXPECT_GT(slow.stats.cycles, fast.stats.cycles);
+  std::uint64_t zstall = 0;
+  for (const auto& u : slow.stats.units)
+    if (u.name == "zbuffer") zstall = u.stall;
+  EXPECT_GT(zstall, 0u);
+}
+
+TEST(HwEngines, DefaultConfigAccuracyOnBenchmarkScenes) {
+  for (const char* name : {"gallery", "cylinders", "character"}) {
+    const std::string path = std::string(QACC_SOURCE_DIR) + "/scenes/" + name + ".json";
+    if (!fs::exists(path)) continue;
+    Scene scene = loadScene(path);
+    scene.width /= 2;
+    scene.height /= 2;
+    const FrameBuffer ref = renderReference(scene, 2);
+    const HwRender hw = renderHw(scene, HwConfig(), 2);
+    const AccuracyReport a = accuracyReport(ref, hw.fb, scene.camera, 24);
+    EXPECT_LE(a.wrong_fraction, 1e-3) << name << ": " << a.line();
+    EXPECT_EQ(a.pinholes, 0u) << name << ": " << a.line();
+    EXPECT_GT(a.psnr_db, 40.0) << name;
+    EXPECT_LE(a.mean_depth_lsb, 2.0) << name;
+    EXPECT_EQ(hw.stats.overflow.total(), 0u) << name;
+  }
+}

@@ -1,0 +1,62 @@
+// PNG and PFM round trips.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "raster/image/pfm_io.h"
+#include "raster/image/png_io.h"
+
+using namespace qacc;
+
+namespace {
+std::string tmp(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("qacc_io_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+}  // namespace
+
+TEST(ImageIO, PngRgbRoundTrip) {
+  std::mt19937 rng(1);
+  Image8 img(37, 23, 3);
+  for (auto& v : img.data) v = std::uint8_t(rng());
+  const std::string p = tmp("rgb.png");
+  writePng(p, img);
+  const Image8 back = readPng(p);
+  EXPECT_TRUE(back.sameShape(img));
+  EXPECT_EQ(back.data, img.data);
+  std::filesystem::remove(p);
+}
+
+TEST(ImageIO, Png16RoundTrip) {
+  std::mt19937 rng(2);
+  Image16 img(19, 31, 1);
+  for (auto& v : img.data) v = std::uint16_t(rng());
+  img.data[0] = 0;
+  img.data[1] = 65535;
+  img.data[2] = 256;
+  const std::string p = tmp("ids.png");
+  writePng16(p, img);
+  const Image16 back = readPng16(p);
+  EXPECT_TRUE(back.sameShape(img));
+  EXPECT_EQ(back.data, img.data);
+  std::filesystem::remove(p);
+}
+
+TEST(ImageIO, PfmRoundTripKeepsInfinityAndRowOrder) {
+  ImageF img(5, 3, 1);
+  for (std::size_t i = 0; i < img.data.size(); ++i) img.data[i] = float(i) * 0.25f;
+  img.data[7] = std::numeric_limits<float>::infinity();
+  const std::string p = tmp("d.pfm");
+  writePfm(p, img);
+  const ImageF back = readPfm(p);
+  EXPECT_EQ(back.data, img.data);
+  EXPECT_EQ(back.at(0, 0), 0.0f);
+  EXPECT_TRUE(std::isinf(back.at(2, 1)));
+  std::filesystem::remove(p);
+}
+
+TEST(ImageIO, ReadingAMissingFileThrows) {
+  EXPECT_THROW(readPng("/nonexistent/x.png"), std::runtime_error);
+  EXPECT_THROW(readPfm("/nonexistent/x.pfm"), std::runtime_error);
+}

@@ -1,0 +1,194 @@
+// Image metrics (design §4) on synthetic images with known answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "raster/metrics/coverage_error.h"
+#include "raster/metrics/depth_error.h"
+#include "raster/metrics/distance_transform.h"
+#include "raster/metrics/psnr.h"
+#include "raster/metrics/silhouette_distance.h"
+#include "raster/metrics/ssim.h"
+
+using namespace qacc;
+
+namespace {
+
+Image8 gray(int w, int h, std::uint8_t v) { return Image8(w, h, 1, v); }
+
+// Frame buffer with a disc of object `id` centred at (cx, cy) with radius r.
+FrameBuffer disc(int w, int h, double cx, double cy, double r, int id = 0) {
+  FrameBuffer fb(w, h, {0, 0, 0});
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double dx = x + 0.5 - cx, dy = y + 0.5 - cy;
+      if (dx * dx + dy * dy <= r * r) {
+        const std::size_t i = std::size_t(y) * w + x;
+        fb.object[i] = id;
+        fb.depth[i] = 0.5;
+        for (int c = 0; c < 3; ++c) fb.color.data[i * 3 + c] = 200;
+      }
+    }
+  return fb;
+}
+
+}  // namespace
+
+TEST(Psnr, IdenticalIsInfinite) {
+  const FrameBuffer a = disc(40, 30, 20, 15, 8);
+  EXPECT_TRUE(std::isinf(psnr(a, a)));
+  EXPECT_GT(psnr(a, a), 0);
+}
+
+TEST(Psnr, KnownMse) {
+  // One sample off by 255 among N samples: MSE = 255² / N, PSNR = 10 log10(N).
+  Image8 a = gray(10, 10, 0), b = a;
+  b.at(3, 4) = 255;
+  EXPECT_NEAR(psnr(a, b), 10.0 * std::log10(100.0), 1e-12);
+  // Uniform difference of 5 on every RGB sample: PSNR = 20 log10(255 / 5).
+  Image8 c(8, 8, 3, 100), d(8, 8, 3, 105);
+  EXPECT_NEAR(psnr(c, d), 20.0 * std::log10(255.0 / 5.0), 1e-12);
+  EXPECT_THROW(psnr(gray(3, 3, 0), gray(4, 3, 0)), std::invalid_argument);
+}
+
+TEST(Ssim, IdenticalIsOne) {
+  std::mt19937 rng(7);
+  Image8 a(32, 24, 3);
+  for (auto& v : a.data) v = std::uint8_t(rng() % 256);
+  EXPECT_DOUBLE_EQ(ssim(a, a), 1.0);
+}
+
+TEST(Ssim, ConstantImagesByHand) {
+  // Flat images: σ = 0 so only the luminance term remains: (2 a b + C1) / (a² + b² + C1).
+  const double C1 = 6.5025;  // (0.01 * 255)²
+  const double expected = (2 * 100.0 * 50.0 + C1) / (100.0 * 100.0 + 50.0 * 50.0 + C1);
+  EXPECT_NEAR(ssim(gray(20, 20, 100), gray(20, 20, 50)), expected, 1e-9);
+  // RGB flat images: luma 0.299*R + 0.587*G + 0.114*B.
+  Image8 c(16, 16, 3), d(16, 16, 3, 0);
+  for (std::size_t i = 0; i < c.pixels(); ++i) { c.data[i * 3] = 200; c.data[i * 3 + 1] = 0; c.data[i * 3 + 2] = 0; }
+  const double ya = 0.299 * 200, yb = 0.0;
+  EXPECT_NEAR(ssim(c, d), (2 * ya * yb + C1) / (ya * ya + yb * yb + C1), 1e-6);
+}
+
+TEST(Ssim, SingleWindowByHand) {
+  // An 11x11 image has exactly one valid window. y = 255 − x gives μy = 255 − μx, σy = σx,
+  // σxy = −σx², so SSIM = (2 μx μy + C1)(C2 − 2 σx²) / ((μx² + μy² + C1)(2 σx² + C2)).
+  // The moments are computed here directly with the 2-D Gaussian weights.
+  Image8 x(11, 11, 1), y(11, 11, 1);
+  for (int j = 0; j < 11; ++j)
+    for (int i = 0; i < 11; ++i) {
+      x.at(i, j) = std::uint8_t((i * 37 + j * 11) % 200 + 20);
+      y.at(i, j) = std::uint8_t(255 - x.at(i, j));
+    }
+  double wsum = 0, m = 0, m2 = 0;
+  for (int j = 0; j < 11; ++j)
+    for (int i = 0; i < 11; ++i) {
+      const double w = std::exp(-((i - 5) * (i - 5) + (j - 5) * (j - 5)) / (2 * 1.5 * 1.5));
+      wsum += w;
+      m += w * x.at(i, j);
+      m2 += w * double(x.at(i, j)) * x.at(i, j);
+    }
+  m /= wsum;
+  m2 /= wsum;
+  const double var = m2 - m * m, my = 255 - m;
+  const double C1 = 6.5025, C2 = 58.5225;
+  const double expected = (2 * m * my + C1) * (C2 - 2 * var) / ((m * m + my * my + C1) * (2 * var + C2));
+  EXPECT_NEAR(ssim(x, y), expected, 1e-9);
+  EXPECT_LT(expected, 0.0);  // anti-correlated structure
+}
+
+TEST(DistanceTransform, MatchesBruteForce) {
+  std::mt19937 rng(3);
+  const int w = 23, h = 17;
+  std::vector<std::uint8_t> m(std::size_t(w) * h, 0);
+  for (auto& v : m) v = (rng() % 29 == 0);
+  m[5] = 1;
+  const auto d = squaredDistanceTransform(m, w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double best = std::numeric_limits<double>::infinity();
+      for (int v = 0; v < h; ++v)
+        for (int u = 0; u < w; ++u)
+          if (m[std::size_t(v) * w + u]) best = std::min(best, double((x - u) * (x - u) + (y - v) * (y - v)));
+      ASSERT_EQ(d[std::size_t(y) * w + x], best) << x << "," << y;
+    }
+  const auto e = squaredDistanceTransform(std::vector<std::uint8_t>(6, 0), 3, 2);
+  EXPECT_TRUE(std::isinf(e[0]));
+}
+
+TEST(SilhouetteDistance, IdenticalIsZero) {
+  const FrameBuffer a = disc(64, 48, 30, 20, 12);
+  const SilhouetteDistance s = silhouetteDistance(a, a);
+  EXPECT_GT(s.reference_boundary, 40u);
+  EXPECT_EQ(s.hausdorff, 0.0);
+  EXPECT_EQ(s.mean, 0.0);
+  EXPECT_EQ(s.within_tolerance, 1.0);
+}
+
+TEST(SilhouetteDistance, OnePixelShiftIsOne) {
+  const FrameBuffer a = disc(64, 48, 30, 20, 12), b = disc(64, 48, 31, 20, 12);
+  const SilhouetteDistance s = silhouetteDistance(a, b);
+  EXPECT_DOUBLE_EQ(s.hausdorff, 1.0);
+  EXPECT_GT(s.mean, 0.2);
+  EXPECT_LE(s.mean, 1.0);
+  // A straight vertical edge shifted by one pixel: every boundary pixel is exactly 1 away.
+  FrameBuffer c(20, 10, {0, 0, 0}), d(20, 10, {0, 0, 0});
+  for (int y = 0; y < 10; ++y)
+    for (int x = 0; x < 20; ++x) {
+      if (x < 8) c.object[std::size_t(y) * 20 + x] = 0;
+      if (x < 9) d.object[std::size_t(y) * 20 + x] = 0;
+    }
+  const SilhouetteDistance t = silhouetteDistance(c, d);
+  EXPECT_EQ(t.reference_boundary, 10u);
+  EXPECT_DOUBLE_EQ(t.hausdorff, 1.0);
+  EXPECT_DOUBLE_EQ(t.mean, 1.0);
+  EXPECT_DOUBLE_EQ(t.within_tolerance, 1.0);
+  EXPECT_DOUBLE_EQ(silhouetteDistance(c, d, 0.5).within_tolerance, 0.0);
+}
+
+TEST(SilhouetteDistance, ThreePixelShift) {
+  const FrameBuffer a = disc(64, 48, 30, 20, 12), b = disc(64, 48, 30, 23, 12);
+  EXPECT_DOUBLE_EQ(silhouetteDistance(a, b).hausdorff, 3.0);
+  const FrameBuffer empty(64, 48, {0, 0, 0});
+  EXPECT_TRUE(std::isinf(silhouetteDistance(a, empty).hausdorff));
+}
+
+TEST(CoverageError, CountsEachKind) {
+  FrameBuffer r(4, 1, {0, 0, 0}), t(4, 1, {0, 0, 0});
+  r.object = {0, 1, 1, -1};
+  t.object = {0, 2, -1, 3};
+  const CoverageError e = coverageError(r, t);
+  EXPECT_EQ(e.reference_covered, 3u);
+  EXPECT_EQ(e.wrong_object, 1u);
+  EXPECT_EQ(e.pinholes, 1u);
+  EXPECT_EQ(e.spurious, 1u);
+  EXPECT_NEAR(e.wrongFraction(), 2.0 / 3.0, 1e-15);
+  const Image8 m = coverageErrorMask(r, t);
+  EXPECT_EQ(m.data, (std::vector<std::uint8_t>{0, 1, 2, 3}));
+}
+
+TEST(DepthError, WindowLsbAndView) {
+  Camera cam;
+  cam.near = 1.0;
+  cam.far = 11.0;
+  EXPECT_NEAR(windowDepthToView(cam, 0.0), 1.0, 1e-12);
+  EXPECT_NEAR(windowDepthToView(cam, 1.0), 11.0, 1e-12);
+  // Check against the projection matrix: a point at view distance 3.
+  const Eigen::Vector4d clip = cam.projection(1.0) * Eigen::Vector4d(0, 0, -3, 1);
+  const double z = 0.5 * clip.z() / clip.w() + 0.5;
+  EXPECT_NEAR(windowDepthToView(cam, z), 3.0, 1e-12);
+
+  FrameBuffer r(3, 1, {0, 0, 0}), t(3, 1, {0, 0, 0});
+  r.object = {0, 0, 1};
+  t.object = {0, 0, 2};  // third pixel: different objects, not compared
+  r.depth = {0.5, 0.25, 0.1};
+  t.depth = {0.5 + 3.0 / 16777215.0, 0.25, 0.9};
+  const DepthError e = depthError(r, t, cam);
+  EXPECT_EQ(e.pixels, 2u);
+  EXPECT_NEAR(e.max_lsb, 3.0, 1e-6);
+  EXPECT_NEAR(e.mean_lsb, 1.5, 1e-6);
+  EXPECT_NEAR(e.max_window, 3.0 / 16777215.0, 1e-15);
+  EXPECT_NEAR(e.max_view, windowDepthToView(cam, t.depth[0]) - windowDepthToView(cam, 0.5), 1e-12);
+}

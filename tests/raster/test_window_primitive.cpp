@@ -1,0 +1,104 @@
+// Screen boxes of window-space primitives never miss a visible pixel, and are tight.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "modeling/scene/camera.h"
+#include "modeling/geometry/natural_quadrics.h"
+#include "raster/pixel/pixel_hit.h"
+#include "raster/pixel/window_primitive.h"
+
+using namespace qacc;
+
+namespace {
+
+// Every pixel where the primitive is visible, by brute force over the whole screen, must
+// lie inside its box. Returns the number of visible pixels.
+long long checkBox(const Primitive& prim, const Camera& cam, int W, int H, ScreenBox* boxOut = nullptr,
+                   ScreenBox* visibleOut = nullptr) {
+  const Eigen::Matrix4d Minv = cam.worldToWindow(W, H).inverse();
+  const WindowPrimitive w = toWindow(prim, 0, Minv, W, H);
+  long long visible = 0;
+  ScreenBox seen{W, H, 0, 0};
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      PixelHit h;
+      if (!pixelHit(w, x + 0.5, y + 0.5, h)) continue;
+      ++visible;
+      seen = {std::min(seen.x0, x), std::min(seen.y0, y), std::max(seen.x1, x + 1), std::max(seen.y1, y + 1)};
+      EXPECT_TRUE(x >= w.box.x0 && x < w.box.x1 && y >= w.box.y0 && y < w.box.y1)
+          << "pixel " << x << "," << y << " outside box [" << w.box.x0 << "," << w.box.x1 << ")x[" << w.box.y0
+          << "," << w.box.y1 << ")";
+    }
+  if (boxOut) *boxOut = w.box;
+  if (visibleOut) *visibleOut = seen;
+  return visible;
+}
+
+}  // namespace
+
+TEST(WindowPrimitive, BoxesContainEveryVisiblePixel) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-2, 2), r(0.2, 1.0);
+  const int W = 160, H = 120;
+  for (int trial = 0; trial < 60; ++trial) {
+    Camera cam;
+    cam.eye = {u(rng) * 3, u(rng) * 3, 6 + u(rng)};
+    if (trial % 5 == 0) {
+      cam.type = Camera::Type::Orthographic;
+      cam.height = 6;
+    }
+    const Eigen::Vector3d a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
+    std::vector<Primitive> prims = {
+        makeCylinder(a, b, r(rng)), makeCone(a, b, r(rng)), makeSphere(a, r(rng)),
+        makeHyperboloid1({r(rng), r(rng), r(rng)}, 2).transformed(placement(a, {u(rng) * 40, u(rng) * 40, 0}, {1, 1, 1})),
+        makeHyperboloid2({r(rng), r(rng), r(rng)}, 3).transformed(placement(a, {u(rng) * 40, 0, u(rng) * 40}, {1, 1, 1})),
+        makeParaboloid(r(rng), r(rng), 1.5).transformed(placement(a, {u(rng) * 40, 0, 0}, {1, 1, 1})),
+        makeHyperbolicParaboloid(r(rng), r(rng), 1).transformed(placement(a, {0, u(rng) * 40, 0}, {1, 1, 1})),
+        makeTriangle(a, b, Eigen::Vector3d(u(rng), u(rng), u(rng))),
+    };
+    for (std::size_t k = 0; k < prims.size(); ++k) {
+      Primitive& p = prims[k];
+      SCOPED_TRACE("trial " + std::to_string(trial) + " primitive " + std::to_string(k));
+      p.clip.push_back(HalfSpace(Eigen::Vector4d(u(rng), u(rng), u(rng), u(rng) * 0.5)));
+      for (bool solid : {false, true}) {
+        p.solid = solid;
+        SCOPED_TRACE(solid ? "solid" : "surface");
+        checkBox(p, cam, W, H);
+      }
+    }
+  }
+}
+
+TEST(WindowPrimitive, FiniteCylinderBoxIsTight) {
+  // A thin finite cylinder: its contour conic and its slab are both unbounded on screen,
+  // but the box of the piece itself must be close to its projected extent.
+  Camera cam;
+  cam.eye = {0, 0, 10};
+  const int W = 400, H = 300;
+  const Primitive p = makeCylinder({-1, -0.5, 0}, {1, 0.5, 0}, 0.1);
+  ScreenBox box, seen;
+  const long long visible = checkBox(p, cam, W, H, &box, &seen);
+  EXPECT_GT(visible, 500);
+  // The box is the visible pixels' own bounding box, widened by at most 2 pixels a side.
+  EXPECT_LE(seen.x0 - box.x0, 2);
+  EXPECT_LE(seen.y0 - box.y0, 2);
+  EXPECT_LE(box.x1 - seen.x1, 2);
+  EXPECT_LE(box.y1 - seen.y1, 2);
+}
+
+TEST(WindowPrimitive, ConicBoxOfAnEllipseIsExact) {
+  // x²/9 + y²/4 <= 1 around (50, 40): Δ = 1 − (x−50)²/9 − (y−40)²/4.
+  Conic d;
+  d.A = -1.0 / 9;
+  d.C = -1.0 / 4;
+  d.D = 50.0 / 9;
+  d.E = 40.0 / 4;
+  d.F = 1 - 2500.0 / 9 - 1600.0 / 4;
+  const ScreenBox b = conicBox(d, 200, 200);
+  // Centres i + 0.5 in [47, 53] x [38, 42] → indices 47..52 and 38..41, widened by one.
+  EXPECT_EQ(b.x0, 46);
+  EXPECT_EQ(b.x1, 54);
+  EXPECT_EQ(b.y0, 37);
+  EXPECT_EQ(b.y1, 43);
+}

@@ -1,0 +1,26 @@
+// qacc command line (design §7): render, batch, info and the commands registered in
+// tools/commands.h. Errors print one line "qacc: error: ..." and exit with status 1.
+#include <cstdio>
+#include <exception>
+
+#include "tools/cli/commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"qacc - emulator of the LIFL quadric display accelerator"};
+  app.require_subcommand(1);
+  qacc::addRenderCommand(app);
+  qacc::addBatchCommand(app);
+  qacc::addInfoCommand(app);
+  qacc::addCompareCommand(app);
+  qacc::addReduceCommand(app);
+  qacc::addBenchCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "qacc: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,32 @@
+// Engine dispatch for `qacc render --engine NAME` and the commands that render
+// (batch, bench, compare). Each engine renders a Scene into a FrameBuffer and says what
+// it measured. Engines are added here, one branch each.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "modeling/scene/scene.h"
+#include "raster/image/frame_buffer.h"
+
+namespace qacc {
+
+struct EngineOptions {
+  int threads = 0;          // <= 0: OpenMP default
+  std::string config_path;  // accelerator configuration JSON (hw, hw-cycle)
+  std::string stats_path;   // statistics JSON (+ CSV alongside) (hw, hw-cycle)
+  int level = 0;            // tessellation level (facets)
+  std::string shading;      // facet shading mode (facets)
+  bool report_accuracy = true;  // hw engines: compare with the reference after rendering
+};
+
+struct EngineResult {
+  FrameBuffer fb;
+  double host_ms = 0;             // wall time of the render itself
+  std::vector<std::string> notes; // lines the engine wants printed (stats, accuracy...)
+};
+
+// Throws std::invalid_argument for an unknown engine or one not built in.
+EngineResult runEngine(const std::string& engine, const Scene& scene, const EngineOptions& options);
+std::vector<std::string> engineNames();
+
+}  // namespace qacc

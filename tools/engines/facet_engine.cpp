@@ -1,0 +1,63 @@
+#include "tools/engines/facet_engine.h"
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+namespace qacc {
+
+FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, int threads, TriangleMesh3* meshOut) {
+  if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
+  if (level < 2) throw std::invalid_argument("facets: --level must be at least 2 (triangles per primitive)");
+  FacetRun run;
+  const auto t0 = std::chrono::steady_clock::now();
+  TessellationOptions to;
+  to.triangles = level;
+  to.chord_samples = 2;  // vertices, edge midpoints and the centre region: cheap enough for big scenes
+  TriangleMesh3 mesh = tessellateScene(scene, to, &run.tessellation);
+  run.tessellate_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+#ifdef QACC_HAVE_OSMESA
+  FacetRenderOptions ro;
+  ro.shading = shading;
+  ro.threads = threads;
+  run.render = renderFacets(scene, mesh, ro);
+#else
+  (void)shading;
+  (void)threads;
+#endif
+  if (meshOut) *meshOut = std::move(mesh);
+  return run;
+}
+
+bool runFacetEngine(const std::string& engine, const Scene& scene, const EngineOptions& options, EngineResult& out) {
+  if (engine != "facets") return false;
+  const int level = options.level > 0 ? options.level : kDefaultFacetLevel;
+  FacetRun run = renderFacetScene(scene, level, parseFacetShading(options.shading), options.threads);
+  out.fb = std::move(run.render.fb);
+  out.host_ms = run.tessellate_ms + run.render.totalMs();
+  const TessellationReport& t = run.tessellation;
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "facets: level %d, %zu triangles (%zu cap) from %zu primitives (%zu parametric, %zu planar, "
+                "%zu marching tetrahedra, %zu empty), chord error max %.3g mean %.3g",
+                level, t.triangles, t.cap_triangles, t.primitives, t.parametric, t.planar, t.marching, t.empty,
+                t.max_chord_error, t.mean_chord_error);
+  out.notes.push_back(buf);
+  if (t.exact_surfaces) {
+    std::snprintf(buf, sizeof buf,
+                  "facets: %zu of the triangles tessellate %zu exact surface(s) instead of their quadric pieces "
+                  "(marching tetrahedra of the true surface, grid up to %d cubes per axis)",
+                  t.exact_triangles, t.exact_surfaces, t.exact_grid);
+    out.notes.push_back(buf);
+  }
+  std::snprintf(buf, sizeof buf,
+                "facets: tessellate %.2f ms, GL setup %.2f ms, draw+finish %.2f ms, read back %.2f ms, id pass %.2f ms",
+                run.tessellate_ms, run.render.setup_ms, run.render.draw_ms, run.render.readback_ms, run.render.id_pass_ms);
+  out.notes.push_back(buf);
+  out.notes.push_back("facets: shading " + std::string(facetShadingName(run.render.shading_used)) + ", GL_RENDERER " +
+                      run.render.gl_renderer + ", GL_VERSION " + run.render.gl_version);
+  if (!run.render.note.empty()) out.notes.push_back("facets: " + run.render.note);
+  return true;
+}
+
+}  // namespace qacc

@@ -1,0 +1,27 @@
+// The facet engine of `qacc render --engine facets --level N [--shading gouraud|pixel]`:
+// tessellate every primitive (modeling/tessellation.h; objects with an exact surface are
+// tessellated from that surface, not from their pieces), draw the triangles with OSMesa
+// (raster/osmesa_renderer.h). Without OSMesa in the build it refuses with a clear message.
+#pragma once
+#include <string>
+
+#include "modeling/tessellation/tessellation.h"
+#include "raster/osmesa/osmesa_renderer.h"
+#include "tools/engines/engine.h"
+
+namespace qacc {
+
+constexpr int kDefaultFacetLevel = 128;  // triangles per primitive when --level is not given
+
+struct FacetRun {
+  TessellationReport tessellation;
+  double tessellate_ms = 0;
+  FacetRenderResult render;
+};
+
+// Renders with the facet engine if `engine` is "facets" (returns false otherwise).
+bool runFacetEngine(const std::string& engine, const Scene& scene, const EngineOptions& options, EngineResult& out);
+// The same with everything it measured (for compare). Also returns the triangles.
+FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, int threads, TriangleMesh3* mesh = nullptr);
+
+}  // namespace qacc

@@ -1,0 +1,48 @@
+#include "tools/engines/hw_engine.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "hw_model/report/accuracy_report.h"
+#include "hw_model/engines/cycle_engine.h"
+#include "hw_model/engines/functional_engine.h"
+#include "raster/reference/reference_renderer.h"
+
+namespace qacc {
+
+std::vector<std::string> hwEngineNames() { return {"hw", "hw-cycle"}; }
+
+FrameBuffer renderWithHwEngine(const std::string& engine, const Scene& scene, const HwConfig& cfg, int threads,
+                               HwStats& stats) {
+  if (engine == "hw") {
+    HwRender r = renderHw(scene, cfg, threads);
+    stats = r.stats;
+    return std::move(r.fb);
+  }
+  if (engine == "hw-cycle") {
+    HwRender r = renderHwCycle(scene, cfg, threads);
+    stats = r.stats;
+    return std::move(r.fb);
+  }
+  throw std::invalid_argument("not an accelerator engine: " + engine);
+}
+
+bool runHwEngine(const std::string& engine, const Scene& scene, const EngineOptions& options, EngineResult& out) {
+  bool known = false;
+  for (const auto& n : hwEngineNames()) known |= n == engine;
+  if (!known) return false;
+  const HwConfig cfg = options.config_path.empty() ? HwConfig() : loadHwConfig(options.config_path);
+  const auto t0 = std::chrono::steady_clock::now();
+  HwStats stats;
+  out.fb = renderWithHwEngine(engine, scene, cfg, options.threads, stats);
+  out.host_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (!options.stats_path.empty()) stats.write(options.stats_path);
+  for (const auto& l : stats.summaryLines()) out.notes.push_back(l);
+  if (options.report_accuracy) {
+    const FrameBuffer ref = renderReference(scene, options.threads);
+    out.notes.push_back(accuracyReport(ref, out.fb, scene.camera, cfg.zbuffer_bits).line());
+  }
+  return true;
+}
+
+}  // namespace qacc

@@ -1,0 +1,29 @@
+// RenderJob: load a scene, optionally resize it, render it with an engine and write the
+// requested outputs (colour PNG, 16-bit id PNG, PFM depth). Shared by `render` and `batch`.
+#pragma once
+#include <string>
+
+#include "modeling/loader/scene_loader.h"  // kMaxImageSide, kMaxImagePixels
+#include "tools/engines/engine.h"
+
+namespace qacc {
+
+struct RenderJob {
+  std::string scene_path;
+  std::string engine = "reference";
+  int width = 0, height = 0;  // 0: the scene's own size
+  std::string color_path;     // empty: not written
+  std::string ids_path;
+  std::string depth_path;
+  EngineOptions options;
+};
+
+struct RenderJobResult {
+  Scene scene;
+  EngineResult result;
+};
+
+// Throws SceneError for bad scenes, std::invalid_argument for bad options.
+RenderJobResult runRenderJob(const RenderJob& job);
+
+}  // namespace qacc
