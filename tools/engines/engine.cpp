@@ -3,6 +3,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "modeling/scene/scene_error.h"
 #include "raster/reference/reference_renderer.h"
 #include "tools/engines/facet_engine.h"
 #include "tools/engines/hw_engine.h"
@@ -27,6 +28,12 @@ EngineResult runEngine(const std::string& engine, const Scene& scene, const Engi
                       std::to_string(st.visibility_ms) + " ms, shading " + std::to_string(st.shading_ms) +
                       " ms, " + std::to_string(st.pixel_tests) + " pixel tests");
     return r;
+  }
+  if (!scene.csg_trees.empty() && engine != "reference") {
+    // Drawing the leaves one by one would be a silently wrong image (their union).
+    const int obj = scene.csg_trees.front().object;
+    throw SceneError(scene.file, "/objects/" + std::to_string(obj),
+                     "engine '" + engine + "' cannot draw 'csg' objects yet (use --engine reference)");
   }
   if (runHwEngine(engine, scene, options, r)) return r;
   if (runFacetEngine(engine, scene, options, r)) return r;
