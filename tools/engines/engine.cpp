@@ -17,6 +17,12 @@ std::vector<std::string> engineNames() {
   return names;
 }
 
+void requireCsgSupport(const std::string& engine, const Scene& scene) {
+  if (scene.csg_trees.empty() || engine == "reference") return;
+  throw SceneError(scene.file, "/objects/" + std::to_string(scene.csg_trees.front().object),
+                   "engine '" + engine + "' cannot draw 'csg' objects yet (use --engine reference)");
+}
+
 EngineResult runEngine(const std::string& engine, const Scene& scene, const EngineOptions& options) {
   EngineResult r;
   const auto t0 = std::chrono::steady_clock::now();
@@ -29,12 +35,7 @@ EngineResult runEngine(const std::string& engine, const Scene& scene, const Engi
                       " ms, " + std::to_string(st.pixel_tests) + " pixel tests");
     return r;
   }
-  if (!scene.csg_trees.empty() && engine != "reference") {
-    // Drawing the leaves one by one would be a silently wrong image (their union).
-    const int obj = scene.csg_trees.front().object;
-    throw SceneError(scene.file, "/objects/" + std::to_string(obj),
-                     "engine '" + engine + "' cannot draw 'csg' objects yet (use --engine reference)");
-  }
+  requireCsgSupport(engine, scene);
   if (runHwEngine(engine, scene, options, r)) return r;
   if (runFacetEngine(engine, scene, options, r)) return r;
   // --- further engines (hw, hw-cycle, facets) are dispatched above this line ---
