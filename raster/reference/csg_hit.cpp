@@ -7,13 +7,6 @@
 namespace qacc {
 namespace {
 
-struct Event {
-  double z;
-  int leaf;  // index into leafNodes_
-  bool entering;
-  int tag;   // DepthBound tag
-};
-
 bool contains(const ScreenBox& b, int x, int y) { return x >= b.x0 && x < b.x1 && y >= b.y0 && y < b.y1; }
 
 }  // namespace
@@ -86,21 +79,14 @@ void CsgPixelTree::toggle(int leafNode, bool in, Counters& c) const {
 }
 
 bool CsgPixelTree::hit(double x, double y, CsgHit& hit) const {
-  thread_local std::vector<Event> events;
-  thread_local Counters counters;
-  thread_local const CsgPixelTree* countersOf = nullptr;
-  if (countersOf != this || counters.inside.size() != tree_->nodes.size()) {
-    counters.inside.assign(tree_->nodes.size(), 0);
-    counters.firstIn.assign(tree_->nodes.size(), 0);
-    countersOf = this;
-  }
+  thread_local std::vector<Boundary> events;
   events.clear();
   const int px = int(x), py = int(y);
   if (px < 0 || py < 0) return false;
   const int tile = (py / TileBinner::kTileSize) * tilesX_ + px / TileBinner::kTileSize;
   if (tile >= leafBins_.tiles()) return false;
   for (int l : leafBins_.bin(tile)) {
-    const WindowPrimitive& w = (*win_)[std::size_t(tree_->nodes[std::size_t(leafNodes_[std::size_t(l)])].primitive)];
+    const WindowPrimitive& w = (*win_)[std::size_t(leafPrimitive(l))];
     if (!contains(w.box, px, py)) continue;
     DepthInterval iv[2];
     const int n = solidIntervals(w, x, y, iv);
@@ -109,9 +95,20 @@ bool CsgPixelTree::hit(double x, double y, CsgHit& hit) const {
       events.push_back({iv[k].out.z, l, false, iv[k].out.tag});
     }
   }
+  return resolve(events, kCsgDepthTolerance, hit);
+}
+
+bool CsgPixelTree::resolve(std::vector<Boundary>& events, double tolerance, CsgHit& hit) const {
+  thread_local Counters counters;
+  thread_local const CsgPixelTree* countersOf = nullptr;
+  if (countersOf != this || counters.inside.size() != tree_->nodes.size()) {
+    counters.inside.assign(tree_->nodes.size(), 0);
+    counters.firstIn.assign(tree_->nodes.size(), 0);
+    countersOf = this;
+  }
   if (events.empty()) return false;
   // By depth; at equal depth exits first (two touching intervals of one leaf stay inside).
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+  std::sort(events.begin(), events.end(), [](const Boundary& a, const Boundary& b) {
     if (a.z != b.z) return a.z < b.z;
     if (a.entering != b.entering) return !a.entering;
     return a.leaf < b.leaf;
@@ -120,13 +117,13 @@ bool CsgPixelTree::hit(double x, double y, CsgHit& hit) const {
   std::size_t i = 0;
   while (i < events.size()) {
     std::size_t j = i;
-    for (; j < events.size() && events[j].z - events[i].z <= kCsgDepthTolerance; ++j)
+    for (; j < events.size() && events[j].z - events[i].z <= tolerance; ++j)
       toggle(leafNodes_[std::size_t(events[j].leaf)], events[j].entering, counters);
     const bool now = value(tree_->root, counters);
     if (now != before) {
       int best = -1;
       for (std::size_t k = i; k < j; ++k) {
-        const Event& e = events[k];
+        const Boundary& e = events[k];
         if (e.tag == DepthBound::kView) continue;
         const bool material = polarity_[std::size_t(leafNodes_[std::size_t(e.leaf)])] > 0;
         // The boundaries that turn the result the same way: material entered or hole left
@@ -135,7 +132,7 @@ bool CsgPixelTree::hit(double x, double y, CsgHit& hit) const {
         if (turns && (best < 0 || e.leaf < events[std::size_t(best)].leaf)) best = int(k);
       }
       if (best >= 0) {
-        const Event& e = events[std::size_t(best)];
+        const Boundary& e = events[std::size_t(best)];
         const int node = leafNodes_[std::size_t(e.leaf)];
         hit.z = e.z;
         hit.primitive = tree_->nodes[std::size_t(node)].primitive;

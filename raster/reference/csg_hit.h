@@ -39,6 +39,19 @@ class CsgPixelTree {
   const ScreenBox& box() const { return box_; }
   bool hit(double x, double y, CsgHit& hit) const;
 
+  // For engines that compute the leaves' intervals themselves (the accelerator): one end
+  // of a leaf's interval, the leaves binned per tile, and the sweep over given ends
+  // (`tolerance`: ends closer than this in window depth are one event).
+  struct Boundary {
+    double z;
+    int leaf;  // index of the leaf (leafPrimitive)
+    bool entering;
+    int tag;   // DepthBound tag: surface, view or cap plane
+  };
+  int leafPrimitive(int leaf) const { return tree_->nodes[std::size_t(leafNodes_[std::size_t(leaf)])].primitive; }
+  const std::vector<int>& leavesInTile(int tile) const { return leafBins_.bin(tile); }
+  bool resolve(std::vector<Boundary>& ends, double tolerance, CsgHit& hit) const;
+
  private:
   const CsgTree* tree_;
   const std::vector<WindowPrimitive>* win_;
