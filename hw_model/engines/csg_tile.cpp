@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <omp.h>
+
 #include "hw_model/datapath/pixel_datapath.h"
 
 namespace qacc {
@@ -20,8 +22,7 @@ CsgFrame::CsgFrame(const Scene& scene, int width, int height)
 }
 
 void drawCsgTile(const CsgPixelTree& tree, const FrameSetup& fs, const HwConfig& cfg, const ScreenBox& tile,
-                 int tileIndex, ZBufferMemory& zb, int zbWidth, PixelCounters& px, OverflowCounters& ovf,
-                 CsgCounters& cc) {
+                 int tileIndex, const CsgTarget& target, PixelCounters& px, OverflowCounters& ovf, CsgCounters& cc) {
   const int tw = tile.x1 - tile.x0, th = tile.y1 - tile.y0;
   const double unit = std::ldexp(1.0, -cfg.depth_frac_bits);
   thread_local std::vector<std::vector<CsgPixelTree::Boundary>> lists;
@@ -61,12 +62,39 @@ void drawCsgTile(const CsgPixelTree& tree, const FrameSetup& fs, const HwConfig&
       const i128 z = i128(std::llround(h.z / unit));
       ++px.covered;
       px.caps += h.cap >= 0;
-      const std::size_t pix = std::size_t(y - tile.y0) * std::size_t(zbWidth) + std::size_t(x - tile.x0);
-      if (zb.testAndWrite(pix, ZBufferMemory::storedValue(z, cfg), h.primitive, z, h.cap))
+      const std::size_t pix = std::size_t(y - target.y0) * std::size_t(target.width) + std::size_t(x - target.x0);
+      const std::uint32_t stored = ZBufferMemory::storedValue(z, cfg);
+      ZEntry& e = target.zb.px[pix];
+      const bool wins = stored < e.z || (target.afterOthers && stored == e.z && h.primitive < e.prim);
+      if (wins) {
+        e = {std::int64_t(z), stored, h.primitive, std::int16_t(h.cap)};
         ++px.written;
-      else
+      } else {
         ++px.depth_rejected;
+      }
     }
+}
+
+void drawCsgFrame(const CsgFrame& csg, const FrameSetup& fs, const HwConfig& cfg, int width, int height,
+                  ZBufferMemory& zb, int threads, HwStats& stats) {
+  stats.csg.objects = csg.trees.size();
+  if (csg.trees.empty()) return;
+  TileBinner bins(width, height);
+  const CsgTarget target{zb, 0, 0, width, true};
+  std::vector<PixelCounters> pc(std::size_t(bins.tiles()));
+  std::vector<OverflowCounters> oc(std::size_t(bins.tiles()));
+  std::vector<CsgCounters> cc(std::size_t(bins.tiles()));
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int t = 0; t < bins.tiles(); ++t) {
+    const ScreenBox tile = bins.tile(t);
+    for (const CsgPixelTree& tree : csg.trees)
+      if (!tree.box().intersect(tile).empty())
+        drawCsgTile(tree, fs, cfg, tile, t, target, pc[std::size_t(t)], oc[std::size_t(t)], cc[std::size_t(t)]);
+  }
+  for (int t = 0; t < bins.tiles(); ++t) {
+    stats.overflow.add(oc[std::size_t(t)]);
+    stats.csg.add(cc[std::size_t(t)]);
+  }
 }
 
 }  // namespace qacc

@@ -31,9 +31,23 @@ struct CsgFrame {
   std::vector<int> treeOfPrimitive;  // -1 for primitives outside every csg object
 };
 
-// Draws CSG tree `tree` into the tile-sized Z-buffer `zb` of tile `tileIndex` (pixels `tile`).
+// Where drawCsgTile writes: a Z-buffer whose pixel (x, y) is at (y - y0) * width + x - x0,
+// and the rule for equal stored depths. `hw` draws a csg object in scene order among the
+// other primitives (strict test: the earlier one stays); `hw-cycle` draws it after its
+// timed loop, so an equal depth goes to the primitive earlier in scene order (a csg
+// object's leaves are contiguous in the scene, so their indices stand for its place).
+struct CsgTarget {
+  ZBufferMemory& zb;
+  int x0 = 0, y0 = 0, width = 0;
+  bool afterOthers = false;
+};
+
+// Draws CSG tree `tree` on the pixels of tile `tileIndex` (pixels `tile`).
 void drawCsgTile(const CsgPixelTree& tree, const FrameSetup& fs, const HwConfig& cfg, const ScreenBox& tile,
-                 int tileIndex, ZBufferMemory& zb, int zbWidth, PixelCounters& px, OverflowCounters& ovf,
-                 CsgCounters& cc);
+                 int tileIndex, const CsgTarget& target, PixelCounters& px, OverflowCounters& ovf, CsgCounters& cc);
+// Draws every csg object of the frame after the other primitives into a frame-sized
+// Z-buffer (hw-cycle), tiles in parallel; the result equals drawing them in scene order.
+void drawCsgFrame(const CsgFrame& csg, const FrameSetup& fs, const HwConfig& cfg, int width, int height,
+                  ZBufferMemory& zb, int threads, HwStats& stats);
 
 }  // namespace qacc

@@ -68,7 +68,8 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
       zb.clear();
       for (int k : bin) {
         if (k < 0) {
-          drawCsgTile(csg.trees[std::size_t(-1 - k)], fs, cfg, tile, t, zb, kTile, px, ovf, cc[std::size_t(t)]);
+          drawCsgTile(csg.trees[std::size_t(-1 - k)], fs, cfg, tile, t, CsgTarget{zb, tx0, ty0, kTile, false}, px, ovf,
+                      cc[std::size_t(t)]);
           continue;
         }
         const PrimitiveSetup& s = fs.setups[std::size_t(k)];

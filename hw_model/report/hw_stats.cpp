@@ -55,7 +55,7 @@ nlohmann::ordered_json toJ(const HwStats& s) {
   if (s.csg.objects)
     j["csg"] = {{"objects", s.csg.objects},         {"leaf_pixels", s.csg.leaf_pixels},
                 {"interval_ends", s.csg.interval_ends}, {"max_list_ends", s.csg.max_list_ends},
-                {"resolved_pixels", s.csg.resolved}};
+                {"resolved_pixels", s.csg.resolved}, {"estimated_cycles", s.csg.estimated_cycles}};
   j["overdraw"] = s.overdraw();
   j["overflows"] = {{"total", s.overflow.total()},
                     {"setup", s.overflow.setup.events},

@@ -28,6 +28,10 @@ struct CsgCounters {
   std::uint64_t interval_ends = 0;   // interval ends written to the per-pixel lists
   std::uint64_t max_list_ends = 0;   // the longest per-pixel list, in ends
   std::uint64_t resolved = 0;        // pixels whose tree was evaluated
+  // hw-cycle: the CSG pass after the timed loop, estimated, not simulated: the leaf-pixel
+  // evaluations through the P pixel pipelines at one per cycle each, then the per-pixel
+  // sweeps at one list end per cycle per pipeline, without overlap. Added to `cycles`.
+  std::uint64_t estimated_cycles = 0;
   void add(const CsgCounters& o);
 };
 

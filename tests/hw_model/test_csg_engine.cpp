@@ -1,10 +1,11 @@
 // The accelerator's CSG path (hw_model/engines/csg_tile.h) on the shipped CSG scenes:
 // against the reference within the accuracy of the non-CSG scenes (<= 0.1 % wrong pixels,
-// no pinholes), and the same image for 1 and 3 threads.
+// no pinholes), the same image for 1 and 3 threads and from hw-cycle.
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include "hw_model/engines/cycle_engine.h"
 #include "hw_model/engines/functional_engine.h"
 #include "hw_model/report/accuracy_report.h"
 #include "modeling/loader/scene_loader.h"
@@ -46,4 +47,18 @@ TEST(CsgEngine, ThreadCountDoesNotChangeTheHwImage) {
   EXPECT_EQ(a.fb.color.data, b.fb.color.data);
   EXPECT_EQ(a.fb.depth, b.fb.depth);
   EXPECT_EQ(a.fb.primitive, b.fb.primitive);
+}
+
+TEST(CsgEngine, HwCycleIsBitIdenticalToHwOnCsgScenes) {
+  const HwConfig cfg;
+  for (const char* name : {"csg_mechanical", "csg_quadrics", "csg_molecule"}) {
+    const Scene s = csgScene(name, 240, 180);
+    const HwRender a = renderHw(s, cfg, 2), b = renderHwCycle(s, cfg, 2);
+    EXPECT_EQ(a.fb.color.data, b.fb.color.data) << name;
+    EXPECT_EQ(a.fb.depth, b.fb.depth) << name;
+    EXPECT_EQ(a.fb.primitive, b.fb.primitive) << name;
+    EXPECT_EQ(a.stats.csg.interval_ends, b.stats.csg.interval_ends) << name;
+    EXPECT_GT(b.stats.csg.estimated_cycles, 0u) << name;
+    EXPECT_GE(b.stats.cycles, b.stats.csg.estimated_cycles) << name;
+  }
 }

@@ -18,7 +18,7 @@ std::vector<std::string> engineNames() {
 }
 
 void requireCsgSupport(const std::string& engine, const Scene& scene) {
-  if (scene.csg_trees.empty() || engine == "reference" || engine == "hw") return;
+  if (scene.csg_trees.empty() || engine == "reference" || engine == "hw" || engine == "hw-cycle") return;
   throw SceneError(scene.file, "/objects/" + std::to_string(scene.csg_trees.front().object),
                    "engine '" + engine + "' cannot draw 'csg' objects yet (use --engine reference)");
 }
