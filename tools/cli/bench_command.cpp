@@ -15,7 +15,6 @@
 #include "hw_model/report/cost_model.h"
 #include "hw_model/engines/cycle_engine.h"
 #include "hw_model/engines/functional_engine.h"
-#include "tools/engines/engine.h"
 #include "modeling/loader/scene_loader.h"
 #include "raster/reference/reference_renderer.h"
 #include "tools/cli/commands.h"
@@ -49,7 +48,6 @@ void runBench(const BenchArgs& a) {
               "hw/ref", "cycles", "host s", "trace s", "loop cyc/s", "slowdown", "frame ms", "fps");
   for (const std::string& path : scenes) {
     Scene scene = loadScene(path);
-    requireCsgSupport("hw", scene);
     scene.width = a.width;
     scene.height = a.height;
     double refMs = 1e300, hwMs = 1e300;

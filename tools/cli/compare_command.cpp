@@ -219,7 +219,7 @@ void writeText(const std::string& path, const std::string& text) {
 void runCompare(const CompareOptions& o) {
   namespace fs = std::filesystem;
   Scene scene = loadScene(o.scene_path);
-  requireCsgSupport("hw", scene);
+  requireCsgSupport("facets", scene);
   if ((o.width > 0) != (o.height > 0)) throw std::invalid_argument("--width and --height go together");
   if (o.width > 0) {
     scene.width = o.width;
