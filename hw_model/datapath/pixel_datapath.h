@@ -26,12 +26,27 @@ struct PixelOutcome {
   int clipPasses = 0;      // passes through the clip unit
 };
 
+// One end of a solid's depth interval on a pixel's line, in the depth format: the
+// quadric surface (tag -1), the near or far plane (tag -2) or clip plane `tag` (a cap).
+struct FixedDepthBound {
+  i128 z = 0;
+  int tag = -1;
+};
+struct FixedDepthInterval {
+  FixedDepthBound in, out;
+};
+
 class PixelDatapath {
  public:
   PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg);
   void startSpan(int u, int v);
   void stepRight();
   PixelOutcome evaluate(OverflowCounters& ovf);  // at the current position
+  // For a solid quadric (not a facet): {f <= 0} ∩ clip polyhedron ∩ [0, 1] at the current
+  // position as up to 2 intervals of positive length, ascending — what a CSG method needs
+  // of each operand; the fixed-point form of raster/pixel/solid_intervals.h, from the same
+  // interpolators, square root and depth unit as evaluate() (pixel_datapath_intervals.cpp).
+  int solidIntervals(OverflowCounters& ovf, FixedDepthInterval out[2]);
 
  private:
   const PrimitiveSetup& s_;

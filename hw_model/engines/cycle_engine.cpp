@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "hw_model/engines/csg_tile.h"
 #include "hw_model/engines/frame_resolve.h"
 #include "hw_model/engines/frame_setup.h"
 #include "hw_model/engines/pixel_trace.h"
@@ -33,9 +34,19 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   // simulated below from each primitive's operation count.
   const FrameSetup fs = FrameSetup::build(scene, cfg, nt);
   st.overflow.add(fs.overflow);
+  // The leaves of csg objects do not enter the timed machine: they are drawn after it
+  // (csg_tile.h), untimed, with the scene-order tie rule, so the image equals hw's.
+  const CsgFrame csg(scene, scene.width, scene.height);
+  FrameSetup timedCopy;
+  if (!csg.trees.empty()) {
+    timedCopy.setups = fs.setups;
+    for (PrimitiveSetup& s : timedCopy.setups)
+      if (csg.treeOfPrimitive[std::size_t(s.index)] >= 0) s.visible = false;
+  }
+  const std::vector<PrimitiveSetup>& timedSetups = csg.trees.empty() ? fs.setups : timedCopy.setups;
   // So is the pixel arithmetic (functional-first, timing-directed: pixel_trace.h).
   const auto tr0 = std::chrono::steady_clock::now();
-  const PixelTrace trace = PixelTrace::build(fs.setups, cfg, nt);
+  const PixelTrace trace = PixelTrace::build(timedSetups, cfg, nt);
   st.trace_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count();
   st.overflow.add(trace.overflow);
   st.primitives = fs.setups.size();
@@ -60,9 +71,9 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   ZBufferMemory zb(scene.width, scene.height);
 
   std::vector<std::unique_ptr<Unit>> units;
-  units.push_back(std::make_unique<HostInterfaceUnit>(HostInterfaceUnit::Params::from(cfg), fs.setups, hostToSetup));
-  units.push_back(std::make_unique<SetupUnit>(SetupUnit::Params::from(cfg), fs.setups, hostToSetup, setupToTraversal));
-  units.push_back(std::make_unique<TraversalUnit>(TraversalUnit::Params::from(cfg), fs.setups, trace, setupToTraversal,
+  units.push_back(std::make_unique<HostInterfaceUnit>(HostInterfaceUnit::Params::from(cfg), timedSetups, hostToSetup));
+  units.push_back(std::make_unique<SetupUnit>(SetupUnit::Params::from(cfg), timedSetups, hostToSetup, setupToTraversal));
+  units.push_back(std::make_unique<TraversalUnit>(TraversalUnit::Params::from(cfg), timedSetups, trace, setupToTraversal,
                                                   toPipeline));
   const PixelPipelineUnit::Params pipeParams = PixelPipelineUnit::Params::from(cfg);
   for (std::size_t p = 0; p < P; ++p)
@@ -125,6 +136,9 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   if (delivered != st.pixels.written)
     throw std::logic_error("hw-cycle: shading delivered " + std::to_string(delivered) + " of " +
                            std::to_string(st.pixels.written) + " pixels");
+  drawCsgFrame(csg, fs, cfg, scene.width, scene.height, zb, nt, st);
+  st.csg.estimated_cycles = (st.csg.leaf_pixels + P - 1) / P + (st.csg.interval_ends + P - 1) / P;
+  st.cycles += st.csg.estimated_cycles;
   out.fb = resolveFrame(scene, cfg, fs, zb, nt, st);
   st.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -8,6 +8,7 @@
 #include "hw_model/datapath/pixel_datapath.h"
 #include "hw_model/datapath/span_solver.h"
 #include "hw_model/datapath/zbuffer_memory.h"
+#include "hw_model/engines/csg_tile.h"
 #include "hw_model/engines/frame_resolve.h"
 #include "hw_model/engines/frame_setup.h"
 #include "raster/pixel/shading.h"
@@ -27,11 +28,20 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   st.overflow.add(fs.overflow);
   st.primitives = fs.setups.size();
   TileBinner bins(W, H);
+  // A csg object is one item (index -1 - tree) in the place of its leaves (csg_tile.h).
+  const CsgFrame csg(scene, W, H);
+  std::vector<bool> csgAdded(csg.trees.size(), false);
+  st.csg.objects = csg.trees.size();
   for (const PrimitiveSetup& s : fs.setups) {
+    const int tree = csg.treeOfPrimitive[std::size_t(s.index)];
+    if (tree >= 0 && !csgAdded[std::size_t(tree)]) {
+      csgAdded[std::size_t(tree)] = true;
+      bins.add(-1 - tree, csg.trees[std::size_t(tree)].box());
+    }
     if (!s.visible) continue;
     ++st.visible_primitives;
     st.facet_primitives += s.facet;
-    bins.add(s.index, {s.x0, s.y0, s.x1, s.y1});
+    if (tree < 0) bins.add(s.index, {s.x0, s.y0, s.x1, s.y1});
   }
 
   // Each tile has its own Z-buffer (a tile-sized ZBufferMemory per thread, reused), so the
@@ -42,6 +52,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   const int ntiles = bins.tiles();
   std::vector<PixelCounters> pc(static_cast<std::size_t>(ntiles));
   std::vector<OverflowCounters> oc(static_cast<std::size_t>(ntiles));
+  std::vector<CsgCounters> cc(static_cast<std::size_t>(ntiles));
   std::uint64_t distinct = 0;
 #pragma omp parallel num_threads(nt) reduction(+ : distinct)
   {
@@ -56,6 +67,11 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
       if (bin.empty()) continue;
       zb.clear();
       for (int k : bin) {
+        if (k < 0) {
+          drawCsgTile(csg.trees[std::size_t(-1 - k)], fs, cfg, tile, t, CsgTarget{zb, tx0, ty0, kTile, false}, px, ovf,
+                      cc[std::size_t(t)]);
+          continue;
+        }
         const PrimitiveSetup& s = fs.setups[std::size_t(k)];
         PixelDatapath pp(s, cfg);
         for (int y = std::max(ty0, s.y0); y < std::min(ty1, s.y1); ++y) {
@@ -95,6 +111,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   for (int t = 0; t < ntiles; ++t) {
     st.pixels.add(pc[std::size_t(t)]);
     st.overflow.add(oc[std::size_t(t)]);
+    st.csg.add(cc[std::size_t(t)]);
   }
   st.distinct_written = distinct;
   out.fb = std::move(fb);

@@ -1,5 +1,7 @@
 #include "hw_model/report/hw_stats.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -9,6 +11,14 @@
 #include <nlohmann/json.hpp>
 
 namespace qacc {
+
+void CsgCounters::add(const CsgCounters& o) {
+  objects = std::max(objects, o.objects);
+  leaf_pixels += o.leaf_pixels;
+  interval_ends += o.interval_ends;
+  max_list_ends = std::max(max_list_ends, o.max_list_ends);
+  resolved += o.resolved;
+}
 
 void PixelCounters::add(const PixelCounters& o) {
   tested += o.tested;
@@ -42,6 +52,10 @@ nlohmann::ordered_json toJ(const HwStats& s) {
                  {"caps", s.pixels.caps},               {"clipped", s.pixels.clipped},
                  {"depth_rejected", s.pixels.depth_rejected}, {"written", s.pixels.written},
                  {"clip_passes", s.pixels.clip_passes}, {"distinct_written", s.distinct_written}};
+  if (s.csg.objects)
+    j["csg"] = {{"objects", s.csg.objects},         {"leaf_pixels", s.csg.leaf_pixels},
+                {"interval_ends", s.csg.interval_ends}, {"max_list_ends", s.csg.max_list_ends},
+                {"resolved_pixels", s.csg.resolved}, {"estimated_cycles", s.csg.estimated_cycles}};
   j["overdraw"] = s.overdraw();
   j["overflows"] = {{"total", s.overflow.total()},
                     {"setup", s.overflow.setup.events},

@@ -21,6 +21,20 @@ struct PixelCounters {
   void add(const PixelCounters& o);
 };
 
+// The CSG path (engines/csg_tile.h): per-pixel interval lists of the csg objects' leaves.
+struct CsgCounters {
+  std::uint64_t objects = 0;         // csg objects in the scene
+  std::uint64_t leaf_pixels = 0;     // (pixel, leaf) interval evaluations by the pixel datapath
+  std::uint64_t interval_ends = 0;   // interval ends written to the per-pixel lists
+  std::uint64_t max_list_ends = 0;   // the longest per-pixel list, in ends
+  std::uint64_t resolved = 0;        // pixels whose tree was evaluated
+  // hw-cycle: the CSG pass after the timed loop, estimated, not simulated: the leaf-pixel
+  // evaluations through the P pixel pipelines at one per cycle each, then the per-pixel
+  // sweeps at one list end per cycle per pipeline, without overlap. Added to `cycles`.
+  std::uint64_t estimated_cycles = 0;
+  void add(const CsgCounters& o);
+};
+
 struct UnitStats {
   std::string name;
   std::uint64_t busy = 0, stall = 0, idle = 0;
@@ -63,6 +77,7 @@ struct HwStats {
   double frameSeconds() const { return clock_mhz > 0 ? double(cycles) / (clock_mhz * 1e6) : 0; }
   double overdraw() const;  // covered / distinct pixels written
   std::uint64_t distinct_written = 0;  // pixels showing an object at the end
+  CsgCounters csg;                     // zero without csg objects
 
   std::string toJson() const;
   std::string toCsv() const;  // one header line + one value line

@@ -258,71 +258,86 @@ bool primitiveFinite(const Primitive& p) {
   return true;
 }
 
-void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::map<std::string, int>& materials,
-                const std::string& directory) {
+// What readObject and buildObject share: the type's builder called with the common keys
+// read, then the object's clip, transform, material and solid flag applied.
+struct BuiltObject {
+  std::vector<Primitive> prims;
+  int material = 0;
+  std::string type, note;
+  Placement transform;
+  std::vector<HalfSpace> clip;
+};
+
+BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, const std::map<std::string, int>& materials,
+                            const std::string& directory) {
   if (!o.isObject()) o.fail("expected an object with a \"type\"");
+  BuiltObject out;
   const JsonNode typeNode = o.at("type");
-  const std::string type = typeNode.string();
-  const ObjectBuilder* builder = findObjectBuilder(type);
+  out.type = typeNode.string();
+  const ObjectBuilder* builder = findObjectBuilder(out.type);
   if (!builder) {
     std::string known;
     for (const auto& t : objectTypes()) known += (known.empty() ? "" : ", ") + t;
-    typeNode.fail("unknown object type '" + type + "' (known types: " + known + ")");
+    typeNode.fail("unknown object type '" + out.type + "' (known types: " + known + ")");
   }
   if (auto nm = o.get("name")) nm->string();
-  int material = 0;
   bool has_material = false;
   if (auto m = o.get("material")) {
     const std::string name = m->string();
     if (name != "default") {
       auto it = materials.find(name);
       if (it == materials.end()) m->fail("unknown material '" + name + "'");
-      material = it->second;
+      out.material = it->second;
     }
     has_material = true;
   }
   const bool solid = o.boolean("solid", false);
-  Placement transform;
-  if (auto t = o.get("transform")) transform = readTransform(*t);
-  std::vector<HalfSpace> clip;
-  if (auto c = o.get("clip")) clip = readClip(*c);
+  if (auto t = o.get("transform")) out.transform = readTransform(*t);
+  if (auto c = o.get("clip")) out.clip = readClip(*c);
 
-  const std::size_t exactBefore = scene.exact_surfaces.size();
-  ObjectContext ctx{scene, directory, material, solid, has_material, {}};
-  std::vector<Primitive> prims;
+  ObjectContext ctx{scene, directory, out.material, solid, has_material, {}};
   try {
-    prims = (*builder)(o, ctx);
+    out.prims = (*builder)(o, ctx);
   } catch (const SceneError&) {
     throw;
   } catch (const std::exception& e) {
-    o.fail(std::string("cannot build ") + type + ": " + e.what());
+    o.fail(std::string("cannot build ") + out.type + ": " + e.what());
   }
   o.finish();
+  out.note = ctx.note;
+  for (Primitive& p : out.prims) {
+    p.clip.insert(p.clip.end(), out.clip.begin(), out.clip.end());
+    if (out.transform.given) p = p.transformed(out.transform.M);
+    if (p.material == 0) p.material = out.material;
+    p.solid = p.solid || solid;
+    p.object = objectIndex;
+    if (!primitiveFinite(p)) o.fail("object produces non-finite coefficients (sizes or scales too extreme)");
+    if (p.quadric.Q.topLeftCorner<3, 4>().cwiseAbs().maxCoeff() == 0.0)
+      o.fail("object degenerates to a constant (sizes or scales too extreme for double precision)");
+  }
+  return out;
+}
+
+void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::map<std::string, int>& materials,
+                const std::string& directory) {
+  const std::size_t exactBefore = scene.exact_surfaces.size();
+  BuiltObject built = buildPrimitives(o, int(index), scene, materials, directory);
 
   SceneObject so;
-  so.type = type;
+  so.type = built.type;
   so.first = scene.primitives.size();
-  so.count = prims.size();
-  so.material = material;
-  so.note = ctx.note;
+  so.count = built.prims.size();
+  so.material = built.material;
+  so.note = built.note;
   if (scene.exact_surfaces.size() > exactBefore) {
     // The builder gave the object's true surface (exact_surface.h): place and clip it like the pieces.
     so.exact_surface = int(scene.exact_surfaces.size()) - 1;
     auto& es = scene.exact_surfaces.back();
-    if (transform.given || !clip.empty())
-      es = std::make_shared<PlacedExactSurface>(es, transform.given ? transform.M : Eigen::Matrix4d::Identity(), clip);
+    if (built.transform.given || !built.clip.empty())
+      es = std::make_shared<PlacedExactSurface>(es, built.transform.given ? built.transform.M : Eigen::Matrix4d::Identity(),
+                                                built.clip);
   }
-  for (Primitive& p : prims) {
-    p.clip.insert(p.clip.end(), clip.begin(), clip.end());
-    if (transform.given) p = p.transformed(transform.M);
-    if (p.material == 0) p.material = material;
-    p.solid = p.solid || solid;
-    p.object = int(index);
-    if (!primitiveFinite(p)) o.fail("object produces non-finite coefficients (sizes or scales too extreme)");
-    if (p.quadric.Q.topLeftCorner<3, 4>().cwiseAbs().maxCoeff() == 0.0)
-      o.fail("object degenerates to a constant (sizes or scales too extreme for double precision)");
-    scene.primitives.push_back(std::move(p));
-  }
+  for (Primitive& p : built.prims) scene.primitives.push_back(std::move(p));
   scene.objects.push_back(so);
 }
 
@@ -336,6 +351,16 @@ std::string stem(const std::string& file) {
 }
 
 }  // namespace
+
+std::vector<Primitive> buildObject(const JsonNode& o, ObjectContext& parent, int objectIndex) {
+  std::map<std::string, int> materials;
+  for (std::size_t i = 1; i < parent.scene.materials.size(); ++i) materials.emplace(parent.scene.materials[i].name, int(i));
+  const std::size_t exactBefore = parent.scene.exact_surfaces.size();
+  BuiltObject built = buildPrimitives(o, objectIndex, parent.scene, materials, parent.directory);
+  if (parent.scene.exact_surfaces.size() > exactBefore)
+    o.fail("a '" + built.type + "' object has a non-quadric exact surface and cannot be a part of another object");
+  return std::move(built.prims);
+}
 
 Scene parseScene(const std::string& text, const std::string& file, const std::string& directory) {
   const json doc = parseJson(text, file);

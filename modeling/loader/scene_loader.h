@@ -6,6 +6,7 @@
 #pragma once
 #include <string>
 
+#include "modeling/loader/object_registry.h"
 #include "modeling/scene/scene.h"
 
 namespace qacc {
@@ -18,5 +19,10 @@ constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;     // width * height 
 Scene loadScene(const std::string& path);
 // Parses scene text; `file` names it in messages, `directory` resolves relative paths.
 Scene parseScene(const std::string& text, const std::string& file, const std::string& directory);
+// Builds an object nested inside another one (a part of a `csg` object) as the loader builds a
+// top-level object: the type's builder, then its own `clip`, `transform`, `material` and
+// `solid`. The primitives are in the parent's local frame and belong to scene object
+// `objectIndex`. Objects with a non-quadric exact surface are refused.
+std::vector<Primitive> buildObject(const JsonNode& o, ObjectContext& parent, int objectIndex);
 
 }  // namespace qacc

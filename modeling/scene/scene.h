@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "modeling/scene/camera.h"
+#include "modeling/csg/csg_tree.h"
 #include "modeling/geometry/exact_surface.h"
 #include "modeling/scene/light.h"
 #include "modeling/scene/material.h"
@@ -36,6 +37,9 @@ struct Scene {
   // Exact (non-quadric) surfaces the reference renderer draws instead of the pieces of the
   // objects that refer to them (see exact_surface.h).
   std::vector<std::shared_ptr<const ExactSurface>> exact_surfaces;
+  // Boolean trees of the `csg` objects (modeling/csg/csg_tree.h); their leaves are
+  // primitives of `primitives` that renderers must combine, not draw one by one.
+  std::vector<CsgTree> csg_trees;
 
   // Default lights when a scene gives none: a headlight along the view direction plus ambient.
   static std::vector<Light> defaultLights(const Camera& camera);

@@ -9,6 +9,7 @@
 #include "raster/pixel/shading.h"
 #include "raster/pixel/tile_binner.h"
 #include "raster/pixel/window_primitive.h"
+#include "raster/reference/csg_hit.h"
 
 namespace qacc {
 namespace {
@@ -23,6 +24,7 @@ Eigen::Vector3d dehom(const Eigen::Vector4d& X) { return X.head<3>() / X[3]; }
 struct Item {
   int primitive = -1;  // index into Scene::primitives (for an exact surface: the object's first, or -1)
   int exact = -1;      // index into Scene::exact_surfaces, or -1
+  int csg = -1;        // index into Scene::csg_trees, or -1
   int object = 0;
   int material = 0;
   ScreenBox box;
@@ -46,6 +48,16 @@ FrameBuffer renderReference(const Scene& scene, int threads, ReferenceStats* sta
                           scene.objects[std::size_t(p.object)].exact_surface >= 0;
     if (!replaced) win[std::size_t(i)] = toWindow(p, i, Minv, W, H);
   }
+
+  // A CSG object is one item in place of its leaves (csg_hit.h).
+  std::vector<int> csgOfObject(scene.objects.size(), -1);
+  std::vector<CsgPixelTree> csgTrees;
+  for (std::size_t t = 0; t < scene.csg_trees.size(); ++t) {
+    csgTrees.emplace_back(scene.csg_trees[t], win, W, H);
+    const int obj = scene.csg_trees[t].object;
+    if (obj >= 0 && obj < int(csgOfObject.size())) csgOfObject[std::size_t(obj)] = int(t);
+  }
+  std::vector<bool> csgDone(scene.csg_trees.size(), false);
 
   // Draw items in scene order; an exact surface takes the place of its object's pieces.
   std::vector<Item> items;
@@ -71,6 +83,19 @@ FrameBuffer renderReference(const Scene& scene, int threads, ReferenceStats* sta
       addExact(p.object);
       continue;
     }
+    const int csg = p.object >= 0 && p.object < int(csgOfObject.size()) ? csgOfObject[std::size_t(p.object)] : -1;
+    if (csg >= 0) {
+      if (csgDone[std::size_t(csg)]) continue;
+      csgDone[std::size_t(csg)] = true;
+      Item it;
+      it.csg = csg;
+      it.primitive = i;
+      it.object = p.object;
+      it.material = p.material;
+      it.box = csgTrees[std::size_t(csg)].box();
+      if (!it.box.empty()) items.push_back(it);
+      continue;
+    }
     const WindowPrimitive& w = win[std::size_t(i)];
     if (w.box.empty()) continue;
     Item it;
@@ -91,6 +116,8 @@ FrameBuffer renderReference(const Scene& scene, int threads, ReferenceStats* sta
   std::vector<int> capAt(fb.pixels(), -1);
   std::vector<Eigen::Vector3d> exactNormal;
   if (!scene.exact_surfaces.empty()) exactNormal.assign(fb.pixels(), Eigen::Vector3d::Zero());
+  std::vector<CsgHit> csgAt;  // the winning leaf of a CSG item
+  if (!csgTrees.empty()) csgAt.assign(fb.pixels(), CsgHit{});
   long long tests = 0;
 
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : tests)
@@ -104,7 +131,14 @@ FrameBuffer renderReference(const Scene& scene, int threads, ReferenceStats* sta
           ++tests;
           const double px = x + 0.5, py = y + 0.5;
           const std::size_t pix = std::size_t(y) * W + x;
-          if (it.exact >= 0) {
+          if (it.csg >= 0) {
+            CsgHit ch;
+            if (!csgTrees[std::size_t(it.csg)].hit(px, py, ch) || !(ch.z < fb.depth[pix])) continue;
+            fb.depth[pix] = ch.z;
+            itemAt[pix] = k;
+            capAt[pix] = ch.cap;
+            csgAt[pix] = ch;
+          } else if (it.exact >= 0) {
             const Eigen::Vector3d p0 = dehom(Minv * Eigen::Vector4d(px, py, 0, 1));
             const Eigen::Vector3d p1 = dehom(Minv * Eigen::Vector4d(px, py, 1, 1));
             ExactHit eh;
@@ -142,20 +176,29 @@ FrameBuffer renderReference(const Scene& scene, int threads, ReferenceStats* sta
       const Item& it = items[std::size_t(k)];
       const Eigen::Vector3d P = dehom(Minv * Eigen::Vector4d(x + 0.5, y + 0.5, fb.depth[pix], 1));
       Eigen::Vector3d n;
-      if (it.exact >= 0) {
+      int material = it.material, primitive = it.primitive;
+      if (it.csg >= 0) {
+        // The leaf that won colours and orients the surface (flipped where it is subtracted).
+        const CsgHit& ch = csgAt[pix];
+        const Primitive& prim = scene.primitives[std::size_t(ch.primitive)];
+        n = ch.cap >= 0 ? Eigen::Vector3d(prim.clip[std::size_t(ch.cap)].p.head<3>()) : prim.quadric.gradient(P);
+        n *= double(ch.sign);
+        material = prim.material;
+        primitive = ch.primitive;
+      } else if (it.exact >= 0) {
         n = exactNormal[pix];
       } else {
         const Primitive& prim = scene.primitives[std::size_t(it.primitive)];
         n = capAt[pix] >= 0 ? Eigen::Vector3d(prim.clip[std::size_t(capAt[pix])].p.head<3>())
                             : prim.quadric.gradient(P);
       }
-      const int mi = it.material >= 0 && it.material < int(scene.materials.size()) ? it.material : 0;
+      const int mi = material >= 0 && material < int(scene.materials.size()) ? material : 0;
       const Material fallback;
       const Material& mat = scene.materials.empty() ? fallback : scene.materials[std::size_t(mi)];
       const auto rgb = toSrgb8(shadeLinear(scene, mat, P, n));
       for (int c = 0; c < 3; ++c) fb.color.data[pix * 3 + c] = rgb[std::size_t(c)];
       fb.object[pix] = it.object;
-      fb.primitive[pix] = it.primitive;
+      fb.primitive[pix] = primitive;
     }
   }
   if (stats) stats->shading_ms = msSince(t2);

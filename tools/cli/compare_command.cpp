@@ -45,6 +45,7 @@
 #include "raster/metrics/silhouette_distance.h"
 #include "raster/metrics/ssim.h"
 #include "tools/cli/commands.h"
+#include "tools/engines/engine.h"
 #include "tools/engines/facet_engine.h"
 #include "tools/engines/hw_engine.h"
 #include "tools/report/svg_plot.h"
@@ -218,6 +219,7 @@ void writeText(const std::string& path, const std::string& text) {
 void runCompare(const CompareOptions& o) {
   namespace fs = std::filesystem;
   Scene scene = loadScene(o.scene_path);
+  requireCsgSupport("facets", scene);
   if ((o.width > 0) != (o.height > 0)) throw std::invalid_argument("--width and --height go together");
   if (o.width > 0) {
     scene.width = o.width;

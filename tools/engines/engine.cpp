@@ -3,6 +3,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "modeling/scene/scene_error.h"
 #include "raster/reference/reference_renderer.h"
 #include "tools/engines/facet_engine.h"
 #include "tools/engines/hw_engine.h"
@@ -14,6 +15,12 @@ std::vector<std::string> engineNames() {
   for (const auto& n : hwEngineNames()) names.push_back(n);
   names.push_back("facets");
   return names;
+}
+
+void requireCsgSupport(const std::string& engine, const Scene& scene) {
+  if (scene.csg_trees.empty() || engine == "reference" || engine == "hw" || engine == "hw-cycle") return;
+  throw SceneError(scene.file, "/objects/" + std::to_string(scene.csg_trees.front().object),
+                   "engine '" + engine + "' cannot draw 'csg' objects yet (use --engine reference)");
 }
 
 EngineResult runEngine(const std::string& engine, const Scene& scene, const EngineOptions& options) {
@@ -28,6 +35,7 @@ EngineResult runEngine(const std::string& engine, const Scene& scene, const Engi
                       " ms, " + std::to_string(st.pixel_tests) + " pixel tests");
     return r;
   }
+  requireCsgSupport(engine, scene);
   if (runHwEngine(engine, scene, options, r)) return r;
   if (runFacetEngine(engine, scene, options, r)) return r;
   // --- further engines (hw, hw-cycle, facets) are dispatched above this line ---

@@ -28,5 +28,8 @@ struct EngineResult {
 // Throws std::invalid_argument for an unknown engine or one not built in.
 EngineResult runEngine(const std::string& engine, const Scene& scene, const EngineOptions& options);
 std::vector<std::string> engineNames();
+// Throws a SceneError naming the first `csg` object when `engine` cannot draw CSG (every
+// engine but the reference): drawing the leaves one by one would be a silently wrong image.
+void requireCsgSupport(const std::string& engine, const Scene& scene);
 
 }  // namespace qacc
