@@ -47,6 +47,7 @@
 #include "tools/cli/commands.h"
 #include "tools/engines/facet_engine.h"
 #include "tools/engines/hw_engine.h"
+#include "tools/engines/image_size.h"
 #include "tools/report/svg_plot.h"
 
 namespace qacc {
@@ -218,11 +219,7 @@ void writeText(const std::string& path, const std::string& text) {
 void runCompare(const CompareOptions& o) {
   namespace fs = std::filesystem;
   Scene scene = loadScene(o.scene_path);
-  if ((o.width > 0) != (o.height > 0)) throw std::invalid_argument("--width and --height go together");
-  if (o.width > 0) {
-    scene.width = o.width;
-    scene.height = o.height;
-  }
+  applyImageSize(scene, o.width, o.height);
   const std::vector<int> levels = parseLevels(o.levels);
   const FacetShading shading = parseFacetShading(o.shading);
   if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
@@ -548,8 +545,8 @@ void addCompareCommand(CLI::App& app) {
   cmd->add_option("--shading", o->shading, "Facet shading: gouraud|pixel")->capture_default_str();
   cmd->add_option("--config", o->config_path, "Accelerator configuration JSON");
   cmd->add_option("--threads", o->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
-  cmd->add_option("--width", o->width, "Image width (with --height)")->check(CLI::Range(1, kMaxImageSide));
-  cmd->add_option("--height", o->height, "Image height (with --width)")->check(CLI::Range(1, kMaxImageSide));
+  cmd->add_option("--width", o->width, "Image width (with --height)");
+  cmd->add_option("--height", o->height, "Image height (with --width)");
   cmd->add_flag("--no-facet-cycles", o->no_facet_cycles, "Skip the facet-path cycle runs on the accelerator");
   cmd->callback([o] { runCompare(*o); });
 }
