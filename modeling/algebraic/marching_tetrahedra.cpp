@@ -11,33 +11,67 @@
 
 namespace qacc {
 
+void marchKuhnGrid(const Eigen::Vector3i& cubes, const std::vector<double>& samples, const KuhnCrossings& out) {
+  const std::int64_t nx = cubes.x() + 1, ny = cubes.y() + 1;
+  auto index = [nx, ny](const Eigen::Vector3i& c) { return (std::int64_t(c.z()) * ny + c.y()) * nx + c.x(); };
+  auto in = [&](const Eigen::Vector3i& c) { return samples[std::size_t(index(c))] <= 0.0; };
+  auto edge = [&](const Eigen::Vector3i& u, const Eigen::Vector3i& v) {
+    KuhnEdge e{u, v, index(u), index(v)};
+    if (e.ia > e.ib) {
+      std::swap(e.a, e.b);
+      std::swap(e.ia, e.ib);
+    }
+    return e;
+  };
+  for (int k = 0; k < cubes.z(); ++k)
+    for (int j = 0; j < cubes.y(); ++j)
+      for (int i = 0; i < cubes.x(); ++i) {
+        int nin = 0;  // a cube with all 8 corners on one side has no crossing tetrahedron
+        for (int c = 0; c < 8; ++c) nin += in({i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)});
+        if (nin == 0 || nin == 8) continue;
+        for (const auto& t : kuhnCubeTets(i, j, k)) {
+          std::array<Eigen::Vector3i, 4> inside, outside;
+          int ni = 0, no = 0;
+          for (const auto& v : t) {
+            if (in(v))
+              inside[std::size_t(ni++)] = v;
+            else
+              outside[std::size_t(no++)] = v;
+          }
+          if (ni == 0 || no == 0) continue;
+          if (ni == 1 || no == 1) {
+            const Eigen::Vector3i apex = ni == 1 ? inside[0] : outside[0];
+            const auto& others = ni == 1 ? outside : inside;
+            out.triangle(edge(apex, others[0]), edge(apex, others[1]), edge(apex, others[2]));
+          } else {  // 2 and 2: a quadrilateral
+            out.quad(edge(inside[0], outside[0]), edge(inside[0], outside[1]), edge(inside[1], outside[1]),
+                     edge(inside[1], outside[0]));
+          }
+        }
+      }
+}
+
 TriangleSoup marchingTetrahedra(const Polynomial3& f, const Eigen::AlignedBox3d& box, int level) {
   if (level < 1) throw std::invalid_argument("marchingTetrahedra: at least one cube per axis");
   if (box.isEmpty() || !(box.sizes().array() > 0.0).all()) throw std::invalid_argument("marchingTetrahedra: empty box");
   // The Kuhn mesh of kuhn_mesh.h, walked cube by cube (only the grid values are stored).
   const Eigen::Vector3i n(level, level, level);
   const int N = level + 1;
-  auto index = [N](const Eigen::Vector3i& c) { return (c.z() * N + c.y()) * N + c.x(); };
   std::vector<double> val(std::size_t(N) * std::size_t(N) * std::size_t(N));
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < N; ++k)
     for (int j = 0; j < N; ++j)
-      for (int i = 0; i < N; ++i) val[std::size_t(index({i, j, k}))] = f.eval(kuhnGridPoint(box, n, i, j, k));
-  // A vertex counts as inside when f <= 0.
-  auto in = [&](const Eigen::Vector3i& c) { return val[std::size_t(index(c))] <= 0.0; };
+      for (int i = 0; i < N; ++i)
+        val[(std::size_t(k) * std::size_t(N) + std::size_t(j)) * std::size_t(N) + std::size_t(i)] =
+            f.eval(kuhnGridPoint(box, n, i, j, k));
   TriangleSoup out;
   std::unordered_map<std::uint64_t, int> edgeVertex;
-  auto cut = [&](Eigen::Vector3i ca, Eigen::Vector3i cb) {
-    int a = index(ca), b = index(cb);
-    if (a > b) {
-      std::swap(a, b);
-      std::swap(ca, cb);
-    }
-    const std::uint64_t key = (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+  auto cut = [&](const KuhnEdge& e) {
+    const std::uint64_t key = (std::uint64_t(std::uint32_t(e.ia)) << 32) | std::uint32_t(e.ib);
     auto it = edgeVertex.find(key);
     if (it != edgeVertex.end()) return it->second;
-    Eigen::Vector3d lo = kuhnGridPoint(box, n, ca.x(), ca.y(), ca.z()), hi = kuhnGridPoint(box, n, cb.x(), cb.y(), cb.z());
-    double flo = val[std::size_t(a)];
+    Eigen::Vector3d lo = kuhnGridPoint(box, n, e.a.x(), e.a.y(), e.a.z()), hi = kuhnGridPoint(box, n, e.b.x(), e.b.y(), e.b.z());
+    double flo = val[std::size_t(e.ia)];
     for (int s = 0; s < 60; ++s) {  // bisection keeps the bracket exactly
       const Eigen::Vector3d mid = 0.5 * (lo + hi);
       const double fm = f.eval(mid);
@@ -62,34 +96,14 @@ TriangleSoup marchingTetrahedra(const Polynomial3& f, const Eigen::AlignedBox3d&
     if (nrm.dot(f.gradient((pa + pb + pc) / 3.0)) < 0) std::swap(b, c);
     out.triangles.push_back({a, b, c});
   };
-  for (int k = 0; k < level; ++k)
-    for (int j = 0; j < level; ++j)
-      for (int i = 0; i < level; ++i) {
-        int nin = 0;  // a cube with all 8 corners on one side has no crossing tetrahedron
-        for (int c = 0; c < 8; ++c) nin += in({i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)});
-        if (nin == 0 || nin == 8) continue;
-        for (const auto& t : kuhnCubeTets(i, j, k)) {
-          std::array<Eigen::Vector3i, 4> inside, outside;
-          int ni = 0, no = 0;
-          for (const auto& v : t) {
-            if (in(v))
-              inside[std::size_t(ni++)] = v;
-            else
-              outside[std::size_t(no++)] = v;
-          }
-          if (ni == 0 || no == 0) continue;
-          if (ni == 1 || no == 1) {
-            const Eigen::Vector3i apex = ni == 1 ? inside[0] : outside[0];
-            const auto& others = ni == 1 ? outside : inside;
-            emit(cut(apex, others[0]), cut(apex, others[1]), cut(apex, others[2]));
-          } else {  // 2 and 2: a quadrilateral
-            const int p = cut(inside[0], outside[0]), q = cut(inside[0], outside[1]), r = cut(inside[1], outside[1]),
-                      s = cut(inside[1], outside[0]);
-            emit(p, q, r);
-            emit(p, r, s);
-          }
-        }
-      }
+  KuhnCrossings crossings;
+  crossings.triangle = [&](const KuhnEdge& e0, const KuhnEdge& e1, const KuhnEdge& e2) { emit(cut(e0), cut(e1), cut(e2)); };
+  crossings.quad = [&](const KuhnEdge& e0, const KuhnEdge& e1, const KuhnEdge& e2, const KuhnEdge& e3) {
+    const int p = cut(e0), q = cut(e1), r = cut(e2), s = cut(e3);
+    emit(p, q, r);
+    emit(p, r, s);
+  };
+  marchKuhnGrid(n, val, crossings);
   return out;
 }
 

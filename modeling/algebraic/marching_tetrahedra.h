@@ -1,11 +1,23 @@
-// Marching tetrahedra (design §3.3, §5): a triangle mesh of the algebraic surface f = 0
-// inside a box, on the same conforming Kuhn mesh as the degree reduction, so that quadric
-// pieces and facets can be compared on equal terms (count vs geometric error). Vertices lie
-// on the surface (bisection of f along each sign-changing edge, shared by the tetrahedra
-// around the edge, so the mesh is watertight inside the box); triangles are oriented with
-// their normal along ∇f.
+// Marching tetrahedra (design §3.3, §5), the one walk of the Kuhn mesh (kuhn_mesh.h) that
+// every field uses: the algebraic surfaces here and the quadric pieces of the tessellation
+// (modeling/tessellation/marching_piece.h).
+//
+// marchKuhnGrid is the walk itself: a grid of field samples, a point inside where its value
+// is <= 0 (NaN is outside), each tetrahedron whose corners are on both sides handed to the
+// caller as one triangle (one corner alone on its side) or one quadrilateral (two and two)
+// of crossed edges; where a crossed edge's point goes, and how the triangles are oriented
+// and stored, is the caller's.
+//
+// marchingTetrahedra below is a triangle mesh of the algebraic surface f = 0 inside a box,
+// on the same conforming Kuhn mesh as the degree reduction, so that quadric pieces and
+// facets can be compared on equal terms (count vs geometric error). Vertices lie on the
+// surface (bisection of f along each sign-changing edge, shared by the tetrahedra around the
+// edge, so the mesh is watertight inside the box); triangles are oriented with their normal
+// along ∇f.
 #pragma once
 #include <array>
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -13,6 +25,25 @@
 #include "modeling/algebraic/polynomial3.h"
 
 namespace qacc {
+
+// An edge of the Kuhn mesh crossed by the surface, its lower-indexed end first.
+struct KuhnEdge {
+  Eigen::Vector3i a, b;        // grid coordinates of the ends
+  std::int64_t ia = 0, ib = 0; // their indices in the samples, ia < ib
+};
+
+// What marchKuhnGrid hands over per crossing tetrahedron. A triangle (e0, e1, e2) has the
+// lone corner's three edges in tetrahedron order; a quadrilateral (e0, e1, e2, e3) is
+// (in0-out0, in0-out1, in1-out1, in1-out0), to be split as (e0, e1, e2) and (e0, e2, e3).
+struct KuhnCrossings {
+  std::function<void(const KuhnEdge&, const KuhnEdge&, const KuhnEdge&)> triangle;
+  std::function<void(const KuhnEdge&, const KuhnEdge&, const KuhnEdge&, const KuhnEdge&)> quad;
+};
+
+// Walks the Kuhn mesh of cubes.x() x cubes.y() x cubes.z() cubes (each >= 1), cube by cube
+// in grid order and the 6 tetrahedra of a cube in kuhnCubeTets order. `samples` holds the
+// field at the grid points, point (i, j, k) at (k (ny + 1) + j) (nx + 1) + i.
+void marchKuhnGrid(const Eigen::Vector3i& cubes, const std::vector<double>& samples, const KuhnCrossings& out);
 
 struct TriangleSoup {
   std::vector<Eigen::Vector3d> vertices;

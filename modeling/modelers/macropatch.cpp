@@ -239,16 +239,23 @@ MacropatchOptions fitG0Constants(const ControlNet& P, const MacropatchOptions& o
 
 // ---- G1: 18 cells, exact constraints + fit -------------------------------------------------
 
-void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& corners, const MacropatchOptions& o,
-             std::vector<MacropatchCell>& out) {
+struct BoundaryFace {
+  int cell;
+  Vector3d pa, m, pb, pc;  // corners, midpoint, control; this cell holds (pa, m, pc)
+};
+struct G1Cells {
+  std::vector<Tetrahedron> cells;     // 18: central, edge and filling cells
+  std::vector<BoundaryFace> boundary; // the cells' faces on the macropatch's boundary
+};
+
+// The 18 cells of a G1 macropatch around its apex A (centroid of the controls) and the
+// centroid O of the corners.
+G1Cells g1Cells(const ControlNet& P) {
   const Vector3d A = (P[1] + P[3] + P[5]) / 3.0;
   const Vector3d O = (P[0] + P[2] + P[4]) / 3.0;
-  std::vector<Tetrahedron> cells;
-  struct BoundaryFace {
-    int cell;
-    Vector3d pa, m, pb, pc;  // corners, midpoint, control; this cell holds (pa, m, pc)
-  };
-  std::vector<BoundaryFace> boundary;
+  G1Cells g;
+  std::vector<Tetrahedron>& cells = g.cells;
+  std::vector<BoundaryFace>& boundary = g.boundary;
   for (int e = 0; e < 3; ++e) {
     const int ia = kCorner[e], ib = kCorner[(e + 1) % 3], ic = ia + 1;
     const Vector3d &pa = P[std::size_t(ia)], &pb = P[std::size_t(ib)], &pc = P[std::size_t(ic)];
@@ -269,12 +276,18 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
     cells.push_back({v, m, c2, A});
   }
   for (const auto& t : cells) checkCell(t);
-  const int n = int(cells.size()), unknowns = 10 * n;
+  return g;
+}
 
-  std::vector<Row> rows;
-  auto set = [&](int cell, int a, int b, double value) {
-    rows.push_back({{{10 * cell + entryIndex(a, b), 1.0}}, value});
-  };
+// One coefficient of one cell fixed to a value.
+void setEntry(std::vector<Row>& rows, int cell, int a, int b, double value) {
+  rows.push_back({{{10 * cell + entryIndex(a, b), 1.0}}, value});
+}
+
+void cornerRows(const ControlNet& P, const std::vector<Tetrahedron>& cells, const std::map<Key, CornerData>& corners,
+                std::vector<Row>& rows) {
+  const int n = int(cells.size());
+  auto set = [&](int cell, int a, int b, double value) { setEntry(rows, cell, a, b, value); };
   // Corners: value 0 and the shared gradient.
   for (int t = 0; t < n; ++t)
     for (int ci : kCorner) {
@@ -285,6 +298,13 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
       for (int b = 0; b < 4; ++b)
         if (b != a) set(t, a, b, 0.5 * g.dot(cells[std::size_t(t)][std::size_t(b)] - P[std::size_t(ci)]));
     }
+}
+
+void boundaryRows(const G1Cells& g, const std::map<Key, CornerData>& corners, const MacropatchOptions& o,
+                  std::vector<Row>& rows) {
+  const std::vector<Tetrahedron>& cells = g.cells;
+  const std::vector<BoundaryFace>& boundary = g.boundary;
+  auto set = [&](int cell, int a, int b, double value) { setEntry(rows, cell, a, b, value); };
   // Boundary faces: data from (Pa, Pb, Pc, g_a, g_b) only.
   for (const auto& bf : boundary) {
     const Vector3d ga = corners.at(keyOf(bf.pa)).gradient, gb = corners.at(keyOf(bf.pb)).gradient;
@@ -315,6 +335,10 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
       rows.push_back(r);
     }
   }
+}
+
+void internalFaceRows(const std::vector<Tetrahedron>& cells, std::vector<Row>& rows) {
+  const int n = int(cells.size());
   // G1 (3.23) across every internal face.
   for (int s = 0; s < n; ++s)
     for (int t = s + 1; t < n; ++t) {
@@ -332,6 +356,16 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
         rows.push_back(r);
       }
     }
+}
+
+// The constraints' solutions: a particular one (least squares, refused when the residual
+// shows them inconsistent) and a basis of their null space.
+struct ConstraintSolution {
+  VectorXd xp;
+  MatrixXd N;
+};
+
+ConstraintSolution solveConstraints(const std::vector<Row>& rows, int unknowns, int patch, const MacropatchOptions& o) {
   MatrixXd B = MatrixXd::Zero(Eigen::Index(rows.size()), unknowns);
   VectorXd d(Eigen::Index(rows.size()));
   for (std::size_t r = 0; r < rows.size(); ++r) {
@@ -350,9 +384,13 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
                                 (o.cross_boundary ? "; this net does not admit G1 between macropatches, use G0 joins between them"
                                                   : ""));
   (void)smax;
-  const MatrixXd N = svd.matrixV().rightCols(unknowns - rank);
+  return {xp, svd.matrixV().rightCols(unknowns - rank)};
 
-  // Fit rows: the Bézier triangle's points and tangents.
+}
+
+// Fit rows: the Bézier triangle's points and tangents.
+std::vector<Row> fitRows(const ControlNet& P, const std::vector<Tetrahedron>& cells, const MacropatchOptions& o) {
+  const int n = int(cells.size());
   std::vector<Eigen::Matrix4d> W(static_cast<std::size_t>(n));  // λ = W X
   for (int t = 0; t < n; ++t) W[std::size_t(t)] = BBQuadric::vertexMatrix(cells[std::size_t(t)]).transpose().inverse();
   std::vector<Row> fit;
@@ -376,6 +414,14 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
       fit.push_back(g);
     }
   }
+  return fit;
+}
+
+// The solution closest to the fit rows (ridge-regularised) among xp + N y.
+VectorXd fitInNullSpace(const std::vector<Row>& fit, const ConstraintSolution& c, int unknowns,
+                        const MacropatchOptions& o) {
+  const VectorXd& xp = c.xp;
+  const MatrixXd& N = c.N;
   MatrixXd F = MatrixXd::Zero(Eigen::Index(fit.size()), unknowns);
   for (std::size_t r = 0; r < fit.size(); ++r)
     for (const auto& tm : fit[r].terms) F(Eigen::Index(r), tm.first) += tm.second;
@@ -388,6 +434,20 @@ void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& co
     const VectorXd rhs = -FN.transpose() * (F * xp) - ridge * (N.transpose() * xp);
     x += N * H.ldlt().solve(rhs);
   }
+  return x;
+}
+
+void buildG1(const ControlNet& P, int patch, const std::map<Key, CornerData>& corners, const MacropatchOptions& o,
+             std::vector<MacropatchCell>& out) {
+  const G1Cells g = g1Cells(P);
+  const std::vector<Tetrahedron>& cells = g.cells;
+  const int n = int(cells.size()), unknowns = 10 * n;
+  std::vector<Row> rows;
+  cornerRows(P, cells, corners, rows);
+  boundaryRows(g, corners, o, rows);
+  internalFaceRows(cells, rows);
+  const ConstraintSolution c = solveConstraints(rows, unknowns, patch, o);
+  const VectorXd x = fitInNullSpace(fitRows(P, cells, o), c, unknowns, o);
 
   for (int t = 0; t < n; ++t) {
     MacropatchCell c;

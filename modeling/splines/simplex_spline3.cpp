@@ -329,6 +329,108 @@ class LocalField {
   std::vector<Simplex> simplices_;
 };
 
+// The tetrahedron as a region (its faces first in the plane table: a face shared with a
+// neighbour gets the opposite half-space there), clipped to the domain box when there is one.
+ConvexPolyhedron tetRegion(const Tetrahedron& tet, const Eigen::AlignedBox3d& domain, PlaneTable& planes, double eps) {
+  std::array<int, 4> faceId;
+  for (int a = 0; a < 4; ++a)
+    faceId[std::size_t(a)] = planes.add(facePlane(tet[std::size_t((a + 1) % 4)], tet[std::size_t((a + 2) % 4)],
+                                                  tet[std::size_t((a + 3) % 4)], tet[std::size_t(a)]).p);
+  ConvexPolyhedron start = ConvexPolyhedron::tetrahedron(tet, faceId, {false, false, false, false});
+  if (!domain.isEmpty())
+    for (int axis = 0; axis < 3 && !start.empty(); ++axis) {
+      Eigen::Vector4d lo = Eigen::Vector4d::Zero(), hi = Eigen::Vector4d::Zero();
+      lo[axis] = -1;
+      lo[3] = domain.min()[axis];
+      hi[axis] = 1;
+      hi[3] = -domain.max()[axis];
+      start = start.clipped(planes.add(lo), false, planes.unit, eps);
+      if (!start.empty()) start = start.clipped(planes.add(hi), false, planes.unit, eps);
+    }
+  return start;
+}
+
+// The faces (knot triples) of the straddled simplices, each once, sorted: F is one
+// polynomial between them, so they are the cuts.
+std::vector<std::array<int, 3>> straddledFaces(const LocalField& field, const LocalField::State& st) {
+  std::vector<std::array<int, 3>> triples;
+  for (const auto& p : st.partial) {
+    const auto& k = field.knots(p.simplex);  // sorted
+    triples.push_back({k[1], k[2], k[3]});
+    triples.push_back({k[0], k[2], k[3]});
+    triples.push_back({k[0], k[1], k[3]});
+    triples.push_back({k[0], k[1], k[2]});
+  }
+  std::sort(triples.begin(), triples.end());
+  triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
+  return triples;
+}
+
+// Does a triangle of the group (whose plane is known to cut the region) cross its interior?
+bool trianglesCross(const PlaneGroup& g, const ConvexPolyhedron& poly, const Eigen::AlignedBox3d& box,
+                    const PlaneTable& planes, double eps) {
+  for (const auto& tr : g.triangles) {
+    Eigen::AlignedBox3d tb;
+    for (const Vec& v : tr) tb.extend(v);
+    if (tb.intersects(box) && poly.crossedBy(tr[0], tr[1], tr[2], planes.unit, eps)) return true;
+  }
+  return false;
+}
+
+// A region of the recursive cutting of a tetrahedron.
+struct CutRegion {
+  ConvexPolyhedron poly;
+  std::vector<std::uint32_t> planes;  // groups that may still cross it, in order
+  LocalField::State state;
+  bool classified;
+};
+
+// The plane that cuts r: among the first 16 of its list (largest triangle first) that cut
+// it, the one that leaves the most of it on its thinner side and one of whose triangles
+// crosses it; planes found not to cut r, or whose triangles miss it, are dropped from
+// r.planes. Returns the index in r.planes, r.planes.size() when none cuts.
+std::size_t pickCut(CutRegion& r, const std::vector<PlaneGroup>& groups, const PlaneTable& planes, double eps) {
+  const Eigen::AlignedBox3d box = r.poly.box();
+  std::size_t best = r.planes.size();
+  for (bool more = true; more && best == r.planes.size();) {
+    std::vector<std::pair<double, std::size_t>> cutting;  // (depth, index in r.planes)
+    std::vector<char> drop(r.planes.size(), 0);
+    for (std::size_t k = 0; k < r.planes.size() && cutting.size() < 16; ++k) {
+      const PlaneGroup& g = groups[r.planes[k]];
+      double mn = 0, mx = 0;
+      if (g.box.intersects(box))
+        for (const auto& v : r.poly.vertices()) {
+          const double x = planes.unit[std::size_t(g.id)].head<3>().dot(v.x) + planes.unit[std::size_t(g.id)].w();
+          mn = std::min(mn, x);
+          mx = std::max(mx, x);
+        }
+      if (mn < -eps && mx > eps)
+        cutting.emplace_back(std::min(-mn, mx), k);
+      else
+        drop[k] = 1;
+    }
+    more = cutting.size() == 16;  // when all 16 fail, look further down the list
+    std::stable_sort(cutting.begin(), cutting.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    for (const auto& [depth, k] : cutting) {
+      if (trianglesCross(groups[r.planes[k]], r.poly, box, planes, eps)) {
+        best = k;
+        break;
+      }
+      drop[k] = 1;
+    }
+    std::vector<std::uint32_t> kept;
+    std::size_t keptBest = 0;
+    for (std::size_t k = 0; k < r.planes.size(); ++k) {
+      if (k == best) keptBest = kept.size();
+      if (!drop[k]) kept.push_back(r.planes[k]);
+    }
+    r.planes.swap(kept);
+    if (best < kept.size()) best = keptBest;
+    else best = r.planes.size();
+  }
+  return best;
+}
+
 }  // namespace
 
 SimplexSpline3::CellStats& SimplexSpline3::CellStats::operator+=(const CellStats& o) {
@@ -348,21 +450,7 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
   Tetrahedron tet;
   for (int a = 0; a < 4; ++a) tet[std::size_t(a)] = verts_[std::size_t(T[std::size_t(a)])];
   PlaneTable planes;
-  std::array<int, 4> faceId;
-  for (int a = 0; a < 4; ++a)  // a face shared with a neighbour gets the opposite half-space there
-    faceId[std::size_t(a)] = planes.add(facePlane(tet[std::size_t((a + 1) % 4)], tet[std::size_t((a + 2) % 4)],
-                                                  tet[std::size_t((a + 3) % 4)], tet[std::size_t(a)]).p);
-  ConvexPolyhedron start = ConvexPolyhedron::tetrahedron(tet, faceId, {false, false, false, false});
-  if (!domain_.isEmpty())
-    for (int axis = 0; axis < 3 && !start.empty(); ++axis) {
-      Eigen::Vector4d lo = Eigen::Vector4d::Zero(), hi = Eigen::Vector4d::Zero();
-      lo[axis] = -1;
-      lo[3] = domain_.min()[axis];
-      hi[axis] = 1;
-      hi[3] = -domain_.max()[axis];
-      start = start.clipped(planes.add(lo), false, planes.unit, eps);
-      if (!start.empty()) start = start.clipped(planes.add(hi), false, planes.unit, eps);
-    }
+  const ConvexPolyhedron start = tetRegion(tet, domain_, planes, eps);
   if (start.empty()) return out;
   ++stats.tets;
 
@@ -391,51 +479,26 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
   double rlo, rhi;
   field.classify(start, rootState, rlo, rhi);
 
-  // Cuts: the faces of the straddled simplices (F is one polynomial between them), each once.
-  std::vector<std::array<int, 3>> triples;
-  for (const auto& p : rootState.partial) {
-    const auto& k = field.knots(p.simplex);  // sorted
-    triples.push_back({k[1], k[2], k[3]});
-    triples.push_back({k[0], k[2], k[3]});
-    triples.push_back({k[0], k[1], k[3]});
-    triples.push_back({k[0], k[1], k[2]});
-  }
-  std::sort(triples.begin(), triples.end());
-  triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
+  // Cuts: the faces of the straddled simplices.
+  const std::vector<std::array<int, 3>> triples = straddledFaces(field, rootState);
   std::vector<std::array<Vec, 3>> triangles;
   for (const auto& tr : triples) triangles.push_back({knotById(tr[0]), knotById(tr[1]), knotById(tr[2])});
   const std::vector<PlaneGroup> groups = cuttingPlanes(triangles, start, planes, eps);
   stats.planes += groups.size();
-
-  // Does a triangle of the group (whose plane is known to cut the region) cross its interior?
-  auto trianglesCross = [&](const PlaneGroup& g, const ConvexPolyhedron& poly, const Eigen::AlignedBox3d& box) {
-    for (const auto& tr : g.triangles) {
-      Eigen::AlignedBox3d tb;
-      for (const Vec& v : tr) tb.extend(v);
-      if (tb.intersects(box) && poly.crossedBy(tr[0], tr[1], tr[2], planes.unit, eps)) return true;
-    }
-    return false;
-  };
 
   // Recursive cutting, depth first (negative side first): deterministic. A region is cut by
   // the plane, among the first 16 of its list (largest triangle first) that cut it, that
   // leaves the most of it on its thinner side and one of whose triangles crosses it
   // (balanced cuts shrink regions fastest, and their bounds with them). Planes found not to
   // cut the region, or whose triangles miss it, are dropped for the whole subtree.
-  struct Region {
-    ConvexPolyhedron poly;
-    std::vector<std::uint32_t> planes;  // groups that may still cross it, in order
-    LocalField::State state;
-    bool classified;
-  };
-  std::vector<Region> stack;
+  std::vector<CutRegion> stack;
   {
-    Region root{start, {}, std::move(rootState), true};
+    CutRegion root{start, {}, std::move(rootState), true};
     for (std::uint32_t g = 0; g < groups.size(); ++g) root.planes.push_back(g);
     stack.push_back(std::move(root));
   }
   while (!stack.empty()) {
-    Region r = std::move(stack.back());
+    CutRegion r = std::move(stack.back());
     stack.pop_back();
     double lo = rlo, hi = rhi;
     if (!r.classified) field.classify(r.poly, r.state, lo, hi);
@@ -447,46 +510,9 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
         continue;
       }
     }
-    const Eigen::AlignedBox3d box = r.poly.box();
-    std::size_t best = r.planes.size();
-    for (bool more = true; more && best == r.planes.size();) {
-      std::vector<std::pair<double, std::size_t>> cutting;  // (depth, index in r.planes)
-      std::vector<char> drop(r.planes.size(), 0);
-      for (std::size_t k = 0; k < r.planes.size() && cutting.size() < 16; ++k) {
-        const PlaneGroup& g = groups[r.planes[k]];
-        double mn = 0, mx = 0;
-        if (g.box.intersects(box))
-          for (const auto& v : r.poly.vertices()) {
-            const double x = planes.unit[std::size_t(g.id)].head<3>().dot(v.x) + planes.unit[std::size_t(g.id)].w();
-            mn = std::min(mn, x);
-            mx = std::max(mx, x);
-          }
-        if (mn < -eps && mx > eps)
-          cutting.emplace_back(std::min(-mn, mx), k);
-        else
-          drop[k] = 1;
-      }
-      more = cutting.size() == 16;  // when all 16 fail, look further down the list
-      std::stable_sort(cutting.begin(), cutting.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
-      for (const auto& [depth, k] : cutting) {
-        if (trianglesCross(groups[r.planes[k]], r.poly, box)) {
-          best = k;
-          break;
-        }
-        drop[k] = 1;
-      }
-      std::vector<std::uint32_t> kept;
-      std::size_t keptBest = 0;
-      for (std::size_t k = 0; k < r.planes.size(); ++k) {
-        if (k == best) keptBest = kept.size();
-        if (!drop[k]) kept.push_back(r.planes[k]);
-      }
-      r.planes.swap(kept);
-      if (best < kept.size()) best = keptBest;
-      else best = r.planes.size();
-    }
+    const std::size_t best = pickCut(r, groups, planes, eps);
     if (best < r.planes.size()) {
-      Region a{{}, {}, {}, false}, b{{}, {}, {}, false};
+      CutRegion a{{}, {}, {}, false}, b{{}, {}, {}, false};
       if (!r.poly.split(groups[r.planes[best]].id, planes.unit, eps, a.poly, b.poly))
         throw std::logic_error("SimplexSpline3: a crossing plane did not cut");
       a.planes = r.planes;

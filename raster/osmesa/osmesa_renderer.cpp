@@ -4,6 +4,8 @@
 
 #include <GL/gl.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -196,25 +198,19 @@ struct ContextGuard {
   }
 };
 
-}  // namespace
-
-FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, const FacetRenderOptions& options) {
-  const auto tSetup = Clock::now();
+// An OSMesa context on llvmpipe drawing into `rgba` (W x H float RGBA, rows bottom up) with
+// a 24-bit depth buffer; the renderer's strings go into res.
+void createContext(ContextGuard& guard, std::vector<float>& rgba, int W, int H, int threads, FacetRenderResult& res) {
   // Pin the software rasteriser before Mesa picks a driver (the pipe loader reads these
   // when the first context is created).
   setenv("GALLIUM_DRIVER", "llvmpipe", 1);
-  if (options.threads > 0) setenv("LP_NUM_THREADS", std::to_string(options.threads).c_str(), 1);
-
-  const int W = scene.width, H = scene.height;
-  FacetRenderResult res;
-  res.triangles = mesh.size();
-  ContextGuard guard;
+  if (threads > 0) setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
   const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 0,
                          OSMESA_ACCUM_BITS, 0, OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
   guard.ctx = OSMesaCreateContextAttribs(attribs, nullptr);
   if (!guard.ctx) guard.ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
   if (!guard.ctx) throw std::runtime_error("OSMesa: cannot create a context");
-  std::vector<float> rgba(std::size_t(W) * H * 4, 0.0f);
+  rgba.assign(std::size_t(W) * H * 4, 0.0f);
   if (!OSMesaMakeCurrent(guard.ctx, rgba.data(), GL_FLOAT, W, H))
     throw std::runtime_error("OSMesa: cannot bind a float RGBA buffer");
   OSMesaPixelStore(OSMESA_Y_UP, 1);
@@ -227,19 +223,24 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
   glGetError();
   res.glsl_version = str(0x8B8C /* GL_SHADING_LANGUAGE_VERSION */);
   glGetError();
+}
 
-  // Per-vertex arrays (triangle soup).
+// Per-vertex arrays of the triangle soup: positions, normals, colours (shaded per vertex
+// for Gouraud, the material colour per pixel), (specular, shininess), id colours.
+struct VertexArrays {
+  std::size_t count = 0;
+  std::vector<GLfloat> pos, nor, col, spec, idc;
+};
+
+VertexArrays vertexArrays(const Scene& scene, const TriangleMesh3& mesh, bool gouraud) {
+  VertexArrays va;
   const std::size_t nv = mesh.triangles.size() * 3;
-  std::vector<GLfloat> pos(nv * 3), nor(nv * 3), col(nv * 3), spec(nv * 2), idc(nv * 3);
-  ShaderApi api;
-  const bool apiLoaded = api.load();
-  GLuint prog = 0;
-  res.shading_used = FacetShading::Gouraud;
-  if (options.shading == FacetShading::PerPixel) {
-    prog = perPixelProgram(api, apiLoaded, res.note);
-    if (prog) res.shading_used = FacetShading::PerPixel;
-  }
-  const bool gouraud = res.shading_used == FacetShading::Gouraud;
+  va.count = nv;
+  va.pos.resize(nv * 3);
+  va.nor.resize(nv * 3);
+  va.col.resize(nv * 3);
+  va.spec.resize(nv * 2);
+  va.idc.resize(nv * 3);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const int mi = t < mesh.material.size() ? mesh.material[t] : 0;
     const Material& m = scene.materials[std::size_t(mi) < scene.materials.size() ? std::size_t(mi) : 0];
@@ -249,18 +250,24 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
       const Eigen::Vector3d& p = mesh.positions[std::size_t(mesh.triangles[t][k])];
       const Eigen::Vector3d& n = mesh.normals[std::size_t(mesh.triangles[t][k])];
       for (int c = 0; c < 3; ++c) {
-        pos[v * 3 + c] = GLfloat(p[c]);
-        nor[v * 3 + c] = GLfloat(n[c]);
+        va.pos[v * 3 + c] = GLfloat(p[c]);
+        va.nor[v * 3 + c] = GLfloat(n[c]);
       }
       const Eigen::Vector3d c3 = gouraud ? shadeLinear(scene, m, p, n) : m.color;
-      for (int c = 0; c < 3; ++c) col[v * 3 + c] = GLfloat(c3[c]);
-      spec[v * 2] = GLfloat(m.specular);
-      spec[v * 2 + 1] = GLfloat(m.shininess);
-      idc[v * 3 + 0] = GLfloat((id >> 16) & 255) / 255.0f;
-      idc[v * 3 + 1] = GLfloat((id >> 8) & 255) / 255.0f;
-      idc[v * 3 + 2] = GLfloat(id & 255) / 255.0f;
+      for (int c = 0; c < 3; ++c) va.col[v * 3 + c] = GLfloat(c3[c]);
+      va.spec[v * 2] = GLfloat(m.specular);
+      va.spec[v * 2 + 1] = GLfloat(m.shininess);
+      va.idc[v * 3 + 0] = GLfloat((id >> 16) & 255) / 255.0f;
+      va.idc[v * 3 + 1] = GLfloat((id >> 8) & 255) / 255.0f;
+      va.idc[v * 3 + 2] = GLfloat(id & 255) / 255.0f;
     }
   }
+  return va;
+}
+
+// The scene camera's matrices, a strict depth test, no culling, lighting, dithering nor
+// blending, unclamped colours; the vertex arrays bound (colours bound by the passes).
+void setFixedState(const Scene& scene, int W, int H, const VertexArrays& va) {
   glViewport(0, 0, W, H);
   glDepthRange(0.0, 1.0);
   loadMatrix(GL_PROJECTION, scene.camera.projection(double(W) / double(H)));
@@ -278,59 +285,49 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
   }
   glGetError();
   glEnableClientState(GL_VERTEX_ARRAY);
-  glVertexPointer(3, GL_FLOAT, 0, pos.data());
+  glVertexPointer(3, GL_FLOAT, 0, va.pos.data());
   glEnableClientState(GL_COLOR_ARRAY);
   glEnableClientState(GL_NORMAL_ARRAY);
-  glNormalPointer(GL_FLOAT, 0, nor.data());
+  glNormalPointer(GL_FLOAT, 0, va.nor.data());
   glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-  glTexCoordPointer(2, GL_FLOAT, 0, spec.data());
-  if (prog) {
-    api.useProgram(prog);
-    GLint types[kMaxLights];
-    std::vector<GLfloat> vecs(kMaxLights * 3, 0.0f), cols(kMaxLights * 3, 0.0f);
-    const int nl = std::min<int>(kMaxLights, int(scene.lights.size()));
-    for (int i = 0; i < nl; ++i) {
-      const Light& l = scene.lights[std::size_t(i)];
-      types[i] = l.type == Light::Type::Ambient ? 0 : (l.type == Light::Type::Directional ? 1 : 2);
-      const Eigen::Vector3d v = l.type == Light::Type::Point ? l.position : l.direction;
-      for (int c = 0; c < 3; ++c) {
-        vecs[std::size_t(i) * 3 + c] = GLfloat(v[c]);
-        cols[std::size_t(i) * 3 + c] = GLfloat(l.color[c]);
-      }
+  glTexCoordPointer(2, GL_FLOAT, 0, va.spec.data());
+}
+
+// The per-pixel program in use with the scene's lights (the first kMaxLights) and camera.
+void usePerPixelProgram(const ShaderApi& api, GLuint prog, const Scene& scene, FacetRenderResult& res) {
+  api.useProgram(prog);
+  GLint types[kMaxLights];
+  std::vector<GLfloat> vecs(kMaxLights * 3, 0.0f), cols(kMaxLights * 3, 0.0f);
+  const int nl = std::min<int>(kMaxLights, int(scene.lights.size()));
+  for (int i = 0; i < nl; ++i) {
+    const Light& l = scene.lights[std::size_t(i)];
+    types[i] = l.type == Light::Type::Ambient ? 0 : (l.type == Light::Type::Directional ? 1 : 2);
+    const Eigen::Vector3d v = l.type == Light::Type::Point ? l.position : l.direction;
+    for (int c = 0; c < 3; ++c) {
+      vecs[std::size_t(i) * 3 + c] = GLfloat(v[c]);
+      cols[std::size_t(i) * 3 + c] = GLfloat(l.color[c]);
     }
-    for (int i = nl; i < kMaxLights; ++i) types[i] = 0;
-    api.uniform1i(api.getUniformLocation(prog, "lightCount"), nl);
-    api.uniform1iv(api.getUniformLocation(prog, "lightType"), kMaxLights, types);
-    api.uniform3fv(api.getUniformLocation(prog, "lightVec"), kMaxLights, vecs.data());
-    api.uniform3fv(api.getUniformLocation(prog, "lightColor"), kMaxLights, cols.data());
-    api.uniform1i(api.getUniformLocation(prog, "orthographic"), scene.camera.type == Camera::Type::Orthographic);
-    const Eigen::Vector3f eye = scene.camera.eye.cast<float>(), fwd = scene.camera.forward().cast<float>();
-    api.uniform3fv(api.getUniformLocation(prog, "eye"), 1, eye.data());
-    api.uniform3fv(api.getUniformLocation(prog, "forward"), 1, fwd.data());
-    if (int(scene.lights.size()) > kMaxLights)
-      res.note = "per-pixel shading uses the first " + std::to_string(kMaxLights) + " lights";
   }
-  glColorPointer(3, GL_FLOAT, 0, col.data());
-  glShadeModel(GL_SMOOTH);
-  const Eigen::Vector3d bgLinear = scene.background;
-  glClearColor(GLfloat(bgLinear.x()), GLfloat(bgLinear.y()), GLfloat(bgLinear.z()), 0.0f);
-  glClearDepth(1.0);
-  res.setup_ms = msSince(tSetup);
+  for (int i = nl; i < kMaxLights; ++i) types[i] = 0;
+  api.uniform1i(api.getUniformLocation(prog, "lightCount"), nl);
+  api.uniform1iv(api.getUniformLocation(prog, "lightType"), kMaxLights, types);
+  api.uniform3fv(api.getUniformLocation(prog, "lightVec"), kMaxLights, vecs.data());
+  api.uniform3fv(api.getUniformLocation(prog, "lightColor"), kMaxLights, cols.data());
+  api.uniform1i(api.getUniformLocation(prog, "orthographic"), scene.camera.type == Camera::Type::Orthographic);
+  const Eigen::Vector3f eye = scene.camera.eye.cast<float>(), fwd = scene.camera.forward().cast<float>();
+  api.uniform3fv(api.getUniformLocation(prog, "eye"), 1, eye.data());
+  api.uniform3fv(api.getUniformLocation(prog, "forward"), 1, fwd.data());
+  if (int(scene.lights.size()) > kMaxLights)
+    res.note = "per-pixel shading uses the first " + std::to_string(kMaxLights) + " lights";
+}
 
-  // Colour pass.
-  const auto tDraw = Clock::now();
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(nv));
-  glFinish();
-  res.draw_ms = msSince(tDraw);
-  if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OSMesa: GL error while drawing facets");
-
-  const auto tRead = Clock::now();
-  std::vector<float> depth(std::size_t(W) * H, 1.0f);
+// The colour pass read back: sRGB colours top row first, and the depth buffer (GL rows).
+void readColour(const Scene& scene, const std::vector<float>& rgba, int W, int H, std::vector<float>& depth,
+                FacetRenderResult& res) {
+  depth.assign(std::size_t(W) * H, 1.0f);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, W, H, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-  const std::array<std::uint8_t, 3> bg8 = toSrgb8(scene.background);
-  res.fb = FrameBuffer(W, H, bg8);
+  res.fb = FrameBuffer(W, H, toSrgb8(scene.background));
   for (int y = 0; y < H; ++y) {
     const int gy = H - 1 - y;  // GL row 0 is the bottom row
     for (int x = 0; x < W; ++x) {
@@ -340,17 +337,12 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
       for (int k = 0; k < 3; ++k) res.fb.color.data[i * 3 + k] = s[k];
     }
   }
-  res.readback_ms = msSince(tRead);
+}
 
-  // Id pass: flat colours = primitive index + 1, no lighting, same depth test.
-  const auto tId = Clock::now();
-  if (prog) api.useProgram(0);
-  glShadeModel(GL_FLAT);
-  glColorPointer(3, GL_FLOAT, 0, idc.data());
-  glClearColor(0, 0, 0, 0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(nv));
-  glFinish();
+// The id pass read back: primitive, object and depth per pixel from the id colours;
+// pixels without an id keep the background colour.
+void readIds(const Scene& scene, const std::vector<float>& rgba, const std::vector<float>& depth, int W, int H,
+             FacetRenderResult& res) {
   for (int y = 0; y < H; ++y) {
     const int gy = H - 1 - y;
     for (int x = 0; x < W; ++x) {
@@ -368,9 +360,65 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
   }
   // Pixels the id pass found empty but the colour pass drew cannot exist (same geometry,
   // same depth test); pixels without an id keep the background colour for consistency.
+  const std::array<std::uint8_t, 3> bg8 = toSrgb8(scene.background);
   for (std::size_t i = 0; i < res.fb.pixels(); ++i)
     if (res.fb.object[i] < 0)
       for (int k = 0; k < 3; ++k) res.fb.color.data[i * 3 + k] = bg8[k];
+}
+
+void drawArrays(std::size_t count) {
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(count));
+  glFinish();
+}
+
+}  // namespace
+
+FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, const FacetRenderOptions& options) {
+  const auto tSetup = Clock::now();
+  const int W = scene.width, H = scene.height;
+  FacetRenderResult res;
+  res.triangles = mesh.size();
+  ContextGuard guard;
+  std::vector<float> rgba;
+  createContext(guard, rgba, W, H, options.threads, res);
+
+  ShaderApi api;
+  const bool apiLoaded = api.load();
+  GLuint prog = 0;
+  res.shading_used = FacetShading::Gouraud;
+  if (options.shading == FacetShading::PerPixel) {
+    prog = perPixelProgram(api, apiLoaded, res.note);
+    if (prog) res.shading_used = FacetShading::PerPixel;
+  }
+  const VertexArrays va = vertexArrays(scene, mesh, res.shading_used == FacetShading::Gouraud);
+  setFixedState(scene, W, H, va);
+  if (prog) usePerPixelProgram(api, prog, scene, res);
+  glColorPointer(3, GL_FLOAT, 0, va.col.data());
+  glShadeModel(GL_SMOOTH);
+  const Eigen::Vector3d bgLinear = scene.background;
+  glClearColor(GLfloat(bgLinear.x()), GLfloat(bgLinear.y()), GLfloat(bgLinear.z()), 0.0f);
+  glClearDepth(1.0);
+  res.setup_ms = msSince(tSetup);
+
+  // Colour pass.
+  const auto tDraw = Clock::now();
+  drawArrays(va.count);
+  res.draw_ms = msSince(tDraw);
+  if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OSMesa: GL error while drawing facets");
+  const auto tRead = Clock::now();
+  std::vector<float> depth;
+  readColour(scene, rgba, W, H, depth, res);
+  res.readback_ms = msSince(tRead);
+
+  // Id pass: flat colours = primitive index + 1, no lighting, same depth test.
+  const auto tId = Clock::now();
+  if (prog) api.useProgram(0);
+  glShadeModel(GL_FLAT);
+  glColorPointer(3, GL_FLOAT, 0, va.idc.data());
+  glClearColor(0, 0, 0, 0);
+  drawArrays(va.count);
+  readIds(scene, rgba, depth, W, H, res);
   res.id_pass_ms = msSince(tId);
   if (prog) api.deleteProgram(prog);
   glDisableClientState(GL_VERTEX_ARRAY);

@@ -7,7 +7,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
+
+#include <sys/wait.h>
 
 #include "modeling/geometry/natural_quadrics.h"
 #include "modeling/tessellation/tessellation.h"
@@ -17,6 +20,7 @@
 #include "raster/metrics/psnr.h"
 #include "raster/reference/reference_renderer.h"
 #include "raster/metrics/silhouette_distance.h"
+#include "tools/engines/image_size.h"
 
 using namespace qacc;
 
@@ -145,6 +149,32 @@ TEST(CompareCommand, GalleryWritesFilesAndCrossoverTable) {
   int lines = 0;
   for (std::string l; std::getline(cf, l);) ++lines;
   EXPECT_EQ(lines, 4);
+}
+
+TEST(CompareCommand, RefusesAnImageOverTheSizeLimit) {
+  // The same size check as render and batch (tools/engines/image_size.h), limit included.
+  std::string text;
+  const int status = runCompareCommand("gallery.json", "--levels 8 --width 100000 --height 240", "test_compare_size_out", text);
+  ASSERT_TRUE(WIFEXITED(status)) << text;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << text;
+  EXPECT_NE(text.find("qacc: error: image size 100000x240 is over the limit"), std::string::npos) << text;
+}
+
+TEST(ImageSize, OneCheckForEveryCommand) {
+  EXPECT_NO_THROW(checkImageSize(0, 0));
+  EXPECT_NO_THROW(checkImageSize(kMaxImageSide, 4096));
+  EXPECT_THROW(checkImageSize(320, 0), std::invalid_argument);
+  EXPECT_THROW(checkImageSize(-320, -240), std::invalid_argument);
+  EXPECT_THROW(checkImageSize(kMaxImageSide + 1, 16), std::invalid_argument);
+  EXPECT_THROW(checkImageSize(kMaxImageSide, kMaxImageSide), std::invalid_argument);  // over kMaxImagePixels
+  Scene s;
+  s.width = 64;
+  s.height = 48;
+  applyImageSize(s, 0, 0);
+  EXPECT_EQ(s.width, 64);
+  applyImageSize(s, 320, 240);
+  EXPECT_EQ(s.width, 320);
+  EXPECT_EQ(s.height, 240);
 }
 
 TEST(CompareCommand, FacetsEngineRefusesClearlyWithoutOsmesa) {

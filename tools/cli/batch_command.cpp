@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "tools/cli/commands.h"
+#include "tools/engines/image_size.h"
 #include "tools/engines/render_job.h"
 
 namespace qacc {
@@ -26,9 +27,10 @@ void addBatchCommand(CLI::App& app) {
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
   cmd->add_option("--engine", args->engine, "Renderer")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
-  cmd->add_option("--width", args->width, "Image width override")->check(CLI::Range(1, kMaxImageSide));
-  cmd->add_option("--height", args->height, "Image height override")->check(CLI::Range(1, kMaxImageSide));
+  cmd->add_option("--width", args->width, "Image width override");
+  cmd->add_option("--height", args->height, "Image height override");
   cmd->callback([args] {
+    checkImageSize(args->width, args->height);
     std::filesystem::create_directories(args->out);
     std::printf("%-16s %10s %11s %14s %12s\n", "scene", "primitives", "size", "pixels covered", "ms");
     double total = 0;

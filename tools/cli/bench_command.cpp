@@ -18,6 +18,7 @@
 #include "modeling/loader/scene_loader.h"
 #include "raster/reference/reference_renderer.h"
 #include "tools/cli/commands.h"
+#include "tools/engines/image_size.h"
 
 namespace qacc {
 
@@ -37,6 +38,7 @@ double wallMs(std::chrono::steady_clock::time_point t0) {
 }
 
 void runBench(const BenchArgs& a) {
+  checkImageSize(a.width, a.height);
   const HwConfig cfg = a.config.empty() ? HwConfig() : loadHwConfig(a.config);
   std::vector<std::string> scenes = a.scenes;
   if (scenes.empty())
@@ -48,8 +50,7 @@ void runBench(const BenchArgs& a) {
               "hw/ref", "cycles", "host s", "trace s", "loop cyc/s", "slowdown", "frame ms", "fps");
   for (const std::string& path : scenes) {
     Scene scene = loadScene(path);
-    scene.width = a.width;
-    scene.height = a.height;
+    applyImageSize(scene, a.width, a.height);
     double refMs = 1e300, hwMs = 1e300;
     for (int i = 0; i < a.repeat; ++i) {
       auto t0 = std::chrono::steady_clock::now();
@@ -85,8 +86,8 @@ void addBenchCommand(CLI::App& app) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "Accelerator benchmark: hw vs reference time, hw-cycle simulation rate, modeled fps");
   cmd->add_option("scenes", args->scenes, "Scene files (default: molecule and sphereflake)");
-  cmd->add_option("--width", args->width, "Image width")->capture_default_str()->check(CLI::Range(1, 16384));
-  cmd->add_option("--height", args->height, "Image height")->capture_default_str()->check(CLI::Range(1, 16384));
+  cmd->add_option("--width", args->width, "Image width")->capture_default_str();
+  cmd->add_option("--height", args->height, "Image height")->capture_default_str();
   cmd->add_option("--config", args->config, "Accelerator configuration JSON");
   cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--repeat", args->repeat, "Frames timed per engine (best is kept)")->capture_default_str()->check(CLI::Range(1, 100));

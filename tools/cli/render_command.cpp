@@ -17,8 +17,8 @@ void addRenderCommand(CLI::App& app) {
   std::string engines;
   for (const auto& n : engineNames()) engines += (engines.empty() ? "" : "|") + n;
   cmd->add_option("--engine", job->engine, "Renderer: " + engines)->capture_default_str();
-  cmd->add_option("--width", job->width, "Image width (overrides the scene; with --height)")->check(CLI::Range(1, kMaxImageSide));
-  cmd->add_option("--height", job->height, "Image height (overrides the scene; with --width)")->check(CLI::Range(1, kMaxImageSide));
+  cmd->add_option("--width", job->width, "Image width (overrides the scene; with --height)");
+  cmd->add_option("--height", job->height, "Image height (overrides the scene; with --width)");
   cmd->add_option("--ids", job->ids_path, "16-bit PNG of object index + 1 per pixel (0 = nothing)");
   cmd->add_option("--depth", job->depth_path, "PFM of window depth (+inf where nothing was hit)");
   cmd->add_option("--stats", job->options.stats_path, "Accelerator statistics JSON (CSV alongside)");

@@ -3,7 +3,6 @@
 #pragma once
 #include <string>
 
-#include "modeling/loader/scene_loader.h"  // kMaxImageSide, kMaxImagePixels
 #include "tools/engines/engine.h"
 
 namespace qacc {
@@ -11,7 +10,7 @@ namespace qacc {
 struct RenderJob {
   std::string scene_path;
   std::string engine = "reference";
-  int width = 0, height = 0;  // 0: the scene's own size
+  int width = 0, height = 0;  // 0: the scene's own size (image_size.h)
   std::string color_path;     // empty: not written
   std::string ids_path;
   std::string depth_path;

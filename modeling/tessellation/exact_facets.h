@@ -1,0 +1,22 @@
+// Facets of objects with an exact surface (exact_surface.h: algebraic surfaces, which the
+// reference ray-casts): they are tessellated from that surface, not from their quadric
+// pieces — the surface's own triangles (marching tetrahedra of the true surface), about
+// `triangles` per quadric piece of the object so that a level means the same budget as
+// for the pieces, or with `chord_error` the budget quadrupled from 64 per piece until the
+// sampled distance to the true surface is at most the bound (up to the finest marching grid).
+#pragma once
+#include <cstddef>
+
+#include "modeling/geometry/exact_surface.h"
+#include "modeling/tessellation/tessellation.h"
+
+namespace qacc::tess {
+
+// The triangles of an object's exact surface, at the budget of `pieces` quadric pieces.
+ExactSurfaceMesh tessellateExact(const ExactSurface& surface, std::size_t pieces, const TessellationOptions& options);
+
+// The object's exact surface as a facet mesh: every triangle tagged with the object, the
+// material and the primitive (the object's first piece) it stands for.
+TriangleMesh3 exactSurfaceFacets(ExactSurfaceMesh&& em, int object, int material, int primitive);
+
+}  // namespace qacc::tess

@@ -1,0 +1,103 @@
+#include "modeling/tessellation/marching_piece.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+#include "modeling/algebraic/marching_tetrahedra.h"
+
+namespace qacc::tess {
+
+// The part of `box` where the surface can be: the cells of a 40³ scan whose corners change
+// sign (or come within a cell's gradient bound of zero), inside the clip planes' reach.
+Eigen::AlignedBox3d surfaceBox(const Quadric& q, const Eigen::AlignedBox3d& box, const std::vector<HalfSpace>& planes) {
+  const int n = 40;
+  const Vector3d h = box.sizes() / n;
+  Eigen::AlignedBox3d out;
+  std::vector<double> val(std::size_t(n + 1) * (n + 1) * (n + 1));
+  auto at = [&](int i, int j, int k) -> double& { return val[(std::size_t(k) * (n + 1) + j) * (n + 1) + i]; };
+  auto pt = [&](int i, int j, int k) { return Vector3d(box.min() + h.cwiseProduct(Vector3d(i, j, k))); };
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) at(i, j, k) = q.eval(pt(i, j, k));
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        double lo = 1e300, hi = -1e300;
+        for (int c = 0; c < 8; ++c) {
+          const double v = at(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+        }
+        // A quadric can dip between corners: allow a margin of one cell's curvature.
+        const Vector3d centre = pt(i, j, k) + 0.5 * h;
+        const double margin = 2.0 * (q.Q.topLeftCorner<3, 3>().cwiseAbs() * h.cwiseAbs()).dot(h.cwiseAbs());
+        if (lo > margin || hi < -margin) continue;
+        bool inside = true;
+        for (const auto& pl : planes)
+          if (pl.eval(centre) > 0.5 * pl.p.head<3>().cwiseAbs().dot(h) + 1e-12) inside = false;
+        if (!inside) continue;
+        out.extend(pt(i, j, k));
+        out.extend(pt(i + 1, j + 1, k + 1));
+      }
+  return out.isEmpty() ? box : out;
+}
+
+// Marching tetrahedra (marchKuhnGrid) over `box` with about n cells along the longest side;
+// edge points start at the linear interpolation and take Newton steps onto the quadric.
+void marchQuadricBox(SurfaceBuilder& sb, const Quadric& q, const Eigen::AlignedBox3d& box0, int n) {
+  Eigen::AlignedBox3d box = box0;
+  const Vector3d pad = 1e-3 * box.sizes() + Vector3d::Constant(1e-9);
+  box.extend(box.max() + pad);
+  box.extend(box.min() - pad);
+  const double h = box.sizes().maxCoeff() / n;
+  Eigen::Vector3i dims;
+  for (int a = 0; a < 3; ++a) dims[a] = std::max(1, int(std::ceil(box.sizes()[a] / h - 1e-9)));
+  auto point = [&](const Eigen::Vector3i& c) { return Vector3d(box.min() + h * c.cast<double>()); };
+  std::vector<double> val(std::size_t((dims[0] + 1)) * (dims[1] + 1) * (dims[2] + 1));
+  std::size_t at = 0;
+  for (int k = 0; k <= dims[2]; ++k)
+    for (int j = 0; j <= dims[1]; ++j)
+      for (int i = 0; i <= dims[0]; ++i) {
+        double v = q.eval(point({i, j, k}));
+        if (v == 0) v = 1e-300;  // grid points never exactly on the surface
+        val[at++] = v;
+      }
+  std::unordered_map<std::uint64_t, Vector3d> edgeCache;
+  const std::uint64_t npoints = val.size();
+  auto E = [&](const KuhnEdge& e) {
+    const std::uint64_t key = std::uint64_t(e.ia) * npoints + std::uint64_t(e.ib);  // exact pair key
+    auto it = edgeCache.find(key);
+    if (it != edgeCache.end()) return it->second;
+    const Vector3d pa = point(e.a), pb = point(e.b);
+    const double fa = val[std::size_t(e.ia)], fb = val[std::size_t(e.ib)];
+    Vector3d x = pa + (fa / (fa - fb)) * (pb - pa);
+    for (int s = 0; s < 3; ++s) {  // Newton along the gradient, kept on the edge's scale
+      const Vector3d g = q.gradient(x);
+      const double g2 = g.squaredNorm();
+      if (!(g2 > 0)) break;
+      Vector3d step = q.eval(x) * g / g2;
+      if (step.norm() > h) break;
+      x -= step;
+    }
+    edgeCache.emplace(key, x);
+    return x;
+  };
+  KuhnCrossings crossings;
+  crossings.triangle = [&](const KuhnEdge& e0, const KuhnEdge& e1, const KuhnEdge& e2) {
+    sb.addTriangle(E(e0), E(e1), E(e2));
+  };
+  crossings.quad = [&](const KuhnEdge& e0, const KuhnEdge& e1, const KuhnEdge& e2, const KuhnEdge& e3) {
+    sb.addQuad(E(e0), E(e1), E(e2), E(e3));
+  };
+  marchKuhnGrid(dims, val, crossings);
+}
+
+void marchQuadricPiece(SurfaceBuilder& sb, const Quadric& q, const Eigen::AlignedBox3d& box,
+                       const std::vector<HalfSpace>& planes, int target) {
+  const int n = std::max(4, int(std::lround(std::sqrt(std::max(2, target) / 3.0))));
+  marchQuadricBox(sb, q, surfaceBox(q, box, planes), n);
+}
+
+}  // namespace qacc::tess

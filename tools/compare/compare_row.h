@@ -1,0 +1,29 @@
+// One measured run of the comparison: the accelerator on the quadrics, or the facets at one
+// tessellation level — its size, times, modeled cycles, image and errors.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "raster/image/frame_buffer.h"
+#include "tools/compare/image_metrics.h"
+
+namespace qacc::compare {
+
+struct Row {
+  std::string engine;  // "hw" or "facets"
+  int level = 0;
+  std::size_t primitives = 0;  // quadrics or triangles
+  double host_ms = 0;          // total host time of the engine (facets: tessellation + GL)
+  double draw_ms = 0;          // facets: GL draw + glFinish of the colour pass only
+  double gl_ms = 0;            // facets: everything OSMesa did (context, arrays, both passes, read back)
+  double tess_ms = 0;          // facets: tessellation (incl. chord-error measurement)
+  std::uint64_t cycles = 0;    // modeled cycles (0 = not measured)
+  double modeled_ms = 0;
+  double chord_error = 0;      // facets: max chord error (world units)
+  int exact_grid = 0;          // facets: marching grid of the exact surfaces (cubes per axis, 0 = none)
+  Metrics m;
+  FrameBuffer fb;
+};
+
+}  // namespace qacc::compare
