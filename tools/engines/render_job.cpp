@@ -5,11 +5,19 @@
 #include "modeling/loader/scene_loader.h"
 #include "raster/image/pfm_io.h"
 #include "raster/image/png_io.h"
+#include "tools/engines/hw_engine.h"
 
 namespace qacc {
 
 RenderJobResult runRenderJob(const RenderJob& job) {
   RenderJobResult out;
+  if (!job.options.report_accuracy) {
+    bool hw = false;
+    for (const auto& n : hwEngineNames()) hw |= n == job.engine;
+    if (!hw)
+      throw std::invalid_argument("--no-accuracy applies to the accelerator engines only (engine '" + job.engine +
+                                  "' prints no accuracy line)");
+  }
   out.scene = loadScene(job.scene_path);
   if ((job.width > 0) != (job.height > 0))
     throw std::invalid_argument("--width and --height go together");
