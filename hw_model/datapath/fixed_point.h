@@ -50,6 +50,20 @@ inline i128 fitWidth(i128 v, int width, OverflowMode mode, OverflowCounter& ovf)
   return (m & sign) ? i128(m) - (i128(1) << width) : i128(m);
 }
 
+// The range of a `width`-bit register, computed once (a datapath narrows every pixel's
+// value to the same widths): fit() is fitWidth() with the in-range test on precomputed
+// bounds, the same result.
+struct WidthRange {
+  int width = 2;
+  i128 lo = -2, hi = 1;
+  WidthRange() = default;
+  explicit WidthRange(int w) : width(w), lo(-(i128(1) << (w - 1))), hi((i128(1) << (w - 1)) - 1) {}
+  i128 fit(i128 v, OverflowMode mode, OverflowCounter& ovf) const {
+    if (v >= lo && v <= hi) return v;
+    return fitWidth(v, width, mode, ovf);
+  }
+};
+
 // v · 2^-shift rounded with the given mode (shift >= 0); shift <= 0 multiplies exactly.
 // T is the register type: i128 in general, std::int64_t where a datapath's widths are
 // known to fit (same result, cheaper on the host).

@@ -16,6 +16,12 @@ PixelDatapath::PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg)
   }
   hv_.resize(s.planes.size());
   zkv_.resize(s.planes.size());
+  hRange_ = WidthRange(cfg.clip_bits + cfg.interp_frac_bits + 2);
+  valueRange_ = WidthRange(cfg.value_bits + 1);
+  deltaRange_ = WidthRange(cfg.delta_bits + 1);
+  accRange_ = WidthRange(cfg.interp_acc_bits);
+  depthHi_ = (i128(1) << (cfg.depth_bits - 1)) - 1;
+  depthLo_ = -depthHi_ - 1;
 }
 
 void PixelDatapath::startSpan(int u, int v) {
@@ -52,11 +58,12 @@ PixelOutcome PixelDatapath::evaluate(OverflowCounters& ovf) {
   const i128 one = i128(1) << Fz;
   const int np = int(h_.size());
   o.clipPasses = ClipTest::passes(np, cfg_.clip_evaluators);
-  const int hw = cfg_.clip_bits + Fi + 2;
-  for (int i = 0; i < np; ++i) hv_[std::size_t(i)] = fitWidth(h_[std::size_t(i)].raw(), hw, cfg_.overflow, ovf.clip);
+  for (int i = 0; i < np; ++i) hv_[std::size_t(i)] = hRange_.fit(h_[std::size_t(i)].raw(), cfg_.overflow, ovf.clip);
+  // clampDepth's result, its bounds precomputed (the call only when a clamp happens).
+  const auto depth = [&](i128 z) { return z >= depthLo_ && z <= depthHi_ ? z : clampDepth(z, cfg_, ovf); };
 
   if (s_.facet) {
-    const i128 z = clampDepth(facetZ_.raw() >> Fi, cfg_, ovf);
+    const i128 z = depth(facetZ_.raw() >> Fi);
     o.candidate = true;
     if (z >= 0 && z <= one && ClipTest::keptByAll(s_.planes, hv_.data(), z, Fz)) {
       o.hit = true;
@@ -65,13 +72,12 @@ PixelOutcome PixelDatapath::evaluate(OverflowCounters& ovf) {
     return o;
   }
 
-  const int vw = cfg_.value_bits + 1;
-  const i128 b = fitWidth(b_.raw() >> Fi, vw, cfg_.overflow, ovf.interpolator);
-  const i128 c = fitWidth(c_.raw() >> Fi, vw, cfg_.overflow, ovf.interpolator);
+  const i128 b = valueRange_.fit(b_.raw() >> Fi, cfg_.overflow, ovf.interpolator);
+  const i128 c = valueRange_.fit(c_.raw() >> Fi, cfg_.overflow, ovf.interpolator);
   if (s_.solid) {
     for (int i = 0; i < np; ++i)
       zkv_[std::size_t(i)] = s_.planes[std::size_t(i)].zdir != 0
-                                 ? clampDepth(zk_[std::size_t(i)].raw() >> Fi, cfg_, ovf)
+                                 ? depth(zk_[std::size_t(i)].raw() >> Fi)
                                  : 0;
     o.clipPasses += 1;
     const CapDecision d = CapSelect::decide(s_, cfg_, zkv_.data(), hv_.data(), b, c);
@@ -87,12 +93,13 @@ PixelOutcome PixelDatapath::evaluate(OverflowCounters& ovf) {
     }
   }
   // Δ >= 0 decides coverage, exactly, from the quadratic interpolator.
-  const i128 delta = delta_.output(cfg_.overflow, ovf.interpolator);
+  // (QuadraticInterpolator::output, the accumulator's range precomputed.)
+  const i128 delta = accRange_.fit(delta_.raw(), cfg_.overflow, ovf.interpolator) >> delta_.frac();
   if (delta < 0) return o;
   o.candidate = true;
-  const i128 din = fitWidth(delta, cfg_.delta_bits + 1, cfg_.overflow, ovf.sqrt);
+  const i128 din = deltaRange_.fit(delta, cfg_.overflow, ovf.sqrt);
   const i128 sd = i128(SqrtExtractor::compute((unsigned __int128)din));
-  const i128 sq = fitWidth(shiftRound(sd, s_.ed - s_.e, cfg_.rounding), vw, cfg_.overflow, ovf.sqrt);
+  const i128 sq = valueRange_.fit(shiftRound(sd, s_.ed - s_.e, cfg_.rounding), cfg_.overflow, ovf.sqrt);
   const DepthRoots r = depthRoots(s_, cfg_, b, c, sq, ovf);
   for (int k = 0; k < r.count; ++k) {
     const i128 z = r.z[k];

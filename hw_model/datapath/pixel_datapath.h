@@ -55,6 +55,8 @@ class PixelDatapath {
   LinearInterpolator b_, facetZ_;
   std::vector<LinearInterpolator> h_, zk_;
   std::vector<i128> hv_, zkv_;
+  WidthRange hRange_, valueRange_, deltaRange_, accRange_;  // the widths every pixel narrows to
+  i128 depthLo_ = 0, depthHi_ = 0;                             // the depth datapath's clamp
 };
 
 }  // namespace qacc

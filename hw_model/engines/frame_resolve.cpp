@@ -21,12 +21,14 @@ void resolvePixel(const HwConfig& cfg, const FrameSetup& fs, int x, int y, const
 
 FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs, const ZBufferMemory& zb,
                          int threads, HwStats& stats) {
-  FrameBuffer fb(scene.width, scene.height, toSrgb8(scene.background));
+  const auto background = toSrgb8(scene.background);
+  FrameBuffer fb = FrameBuffer::uninitialised(scene.width, scene.height);  // rows cleared below, in parallel
   const int nt = threads > 0 ? threads : omp_get_max_threads();
   std::uint64_t distinct = 0;
 #pragma omp parallel for schedule(dynamic, 8) num_threads(nt) reduction(+ : distinct)
   for (int y = 0; y < scene.height; ++y) {
     OverflowCounter local;
+    fb.clearRect(0, y, scene.width, y + 1, background);
     for (int x = 0; x < scene.width; ++x) {
       const std::size_t pix = std::size_t(y) * scene.width + x;
       if (zb.px[pix].prim < 0) continue;

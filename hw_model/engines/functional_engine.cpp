@@ -48,7 +48,10 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   // frame's depth state never exists as a whole: the tile's winners are shaded into the
   // frame buffer as soon as its last primitive is drawn.
   constexpr int kTile = TileBinner::kTileSize;
-  FrameBuffer fb(W, H, toSrgb8(scene.background));
+  // The frame buffer is not cleared up front: each tile clears its own rectangle (in
+  // parallel, first touching its pages) and then shades its winners over it.
+  const auto background = toSrgb8(scene.background);
+  FrameBuffer fb = FrameBuffer::uninitialised(W, H);
   const int ntiles = bins.tiles();
   std::vector<PixelCounters> pc(static_cast<std::size_t>(ntiles));
   std::vector<OverflowCounters> oc(static_cast<std::size_t>(ntiles));
@@ -64,6 +67,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
       PixelCounters& px = pc[std::size_t(t)];
       OverflowCounters& ovf = oc[std::size_t(t)];
       const std::vector<int>& bin = bins.bin(t);
+      fb.clearRect(tx0, ty0, tx1, ty1, background);
       if (bin.empty()) continue;
       zb.clear();
       for (int k : bin) {

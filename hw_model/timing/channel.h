@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "hw_model/timing/delay_queue.h"
 
@@ -31,7 +32,10 @@ class Channel : public ChannelBase {
  public:
   static constexpr std::uint64_t kNever = std::numeric_limits<std::uint64_t>::max();
 
-  Channel(const std::uint64_t& now, std::size_t capacity) : now_(now), capacity_(capacity) {}
+  // `touched`: where the channel enters itself on its first send or receive of a cycle, so
+  // that the registry commits only the channels a cycle used (null: never entered).
+  Channel(const std::uint64_t& now, std::size_t capacity, std::vector<ChannelBase*>* touched = nullptr)
+      : now_(now), capacity_(capacity), touched_(touched) {}
   // Sender: room for one more this cycle?
   bool canSend() const { return capacity_ == 0 || atStart_ + sent_ < capacity_; }
   void send(const T& v, std::uint64_t delay = 1) {
@@ -39,6 +43,7 @@ class Channel : public ChannelBase {
     const std::uint64_t arrival = now_ + delay;
     assert(q_.empty() || q_.back().arrival <= arrival);  // items leave in order
     q_.push_back({arrival, v});
+    touch();
     ++sent_;
   }
   // Receiver: the oldest item, once it has arrived.
@@ -47,6 +52,7 @@ class Channel : public ChannelBase {
   void receive() {
     assert(ready());
     q_.pop_front();
+    touch();
     ++received_;
   }
   // Cycle at which the oldest item arrives (kNever when the channel is empty).
@@ -68,8 +74,12 @@ class Channel : public ChannelBase {
     std::uint64_t arrival;
     T item;
   };
+  void touch() {
+    if (touched_ && sent_ == 0 && received_ == 0) touched_->push_back(this);
+  }
   const std::uint64_t& now_;
   std::size_t capacity_;
+  std::vector<ChannelBase*>* touched_;
   DelayQueue<Entry> q_;
   std::size_t atStart_ = 0, sent_ = 0, received_ = 0;
 };

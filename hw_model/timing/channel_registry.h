@@ -1,6 +1,6 @@
 // ChannelRegistry: the clock of the cycle engine and every channel of the machine. Units
 // are wired in one place (engines/cycle_engine.cpp) with channels the registry makes; at
-// the end of each cycle commitAll() commits every channel (two-phase: the tick order of
+// the end of each cycle endCycle() commits every channel the cycle used (two-phase: the tick order of
 // the units within a cycle does not matter), and idle() says whether anything is still
 // on a wire.
 #pragma once
@@ -19,7 +19,7 @@ class ChannelRegistry {
   // Capacity 0: unbounded (the stages inside a pipelined unit).
   template <typename T>
   Channel<T>& make(std::size_t capacity) {
-    auto c = std::make_unique<Channel<T>>(now_, capacity);
+    auto c = std::make_unique<Channel<T>>(now_, capacity, &touched_);
     Channel<T>& ref = *c;
     channels_.push_back(std::move(c));
     return ref;
@@ -27,8 +27,10 @@ class ChannelRegistry {
   // End of the cycle: commits every channel, then the clock advances. True when anything
   // was sent or received during the cycle.
   bool endCycle() {
-    bool changed = false;
-    for (auto& c : channels_) changed |= c->commit();
+    // Only the channels this cycle sent on or received from have anything to commit.
+    const bool changed = !touched_.empty();
+    for (ChannelBase* c : touched_) c->commit();
+    touched_.clear();
     ++now_;
     return changed;
   }
@@ -46,6 +48,7 @@ class ChannelRegistry {
  private:
   std::uint64_t now_ = 0;
   std::vector<std::unique_ptr<ChannelBase>> channels_;
+  std::vector<ChannelBase*> touched_;  // channels sent on or received from this cycle
 };
 
 }  // namespace qacc

@@ -4,17 +4,35 @@
 
 namespace qacc {
 
-FrameBuffer::FrameBuffer(int w, int h, const std::array<std::uint8_t, 3>& bg)
-    : width(w), height(h), color(w, h, 3), depth(std::size_t(w) * h, std::numeric_limits<double>::infinity()),
-      object(std::size_t(w) * h, -1), primitive(std::size_t(w) * h, -1) {
-  // Background colour: one pixel, then the filled prefix doubles (memcpy-speed fill).
-  const std::size_t n = color.data.size();
-  if (n == 0) return;
-  std::copy(bg.begin(), bg.end(), color.data.begin());
-  for (std::size_t done = 3; done < n;) {
-    const std::size_t k = std::min(done, n - done);
-    std::copy_n(color.data.begin(), k, color.data.begin() + std::ptrdiff_t(done));
-    done += k;
+FrameBuffer::FrameBuffer(int w, int h, const std::array<std::uint8_t, 3>& bg) : FrameBuffer(uninitialised(w, h)) {
+  clearRect(0, 0, w, h, bg);
+}
+
+FrameBuffer FrameBuffer::uninitialised(int w, int h) {
+  FrameBuffer fb;
+  fb.width = w;
+  fb.height = h;
+  fb.color = Image8::uninitialised(w, h, 3);
+  fb.depth.resize(fb.pixels());
+  fb.object.resize(fb.pixels());
+  fb.primitive.resize(fb.pixels());
+  return fb;
+}
+
+void FrameBuffer::clearRect(int x0, int y0, int x1, int y1, const std::array<std::uint8_t, 3>& bg) {
+  if (x1 <= x0) return;
+  const std::size_t n = std::size_t(x1 - x0);
+  for (int y = y0; y < y1; ++y) {
+    const std::size_t row = std::size_t(y) * std::size_t(width) + std::size_t(x0);
+    std::fill_n(depth.begin() + std::ptrdiff_t(row), n, std::numeric_limits<double>::infinity());
+    std::fill_n(object.begin() + std::ptrdiff_t(row), n, -1);
+    std::fill_n(primitive.begin() + std::ptrdiff_t(row), n, -1);
+    std::uint8_t* c = color.data.data() + row * 3;
+    for (std::size_t i = 0; i < n; ++i, c += 3) {
+      c[0] = bg[0];
+      c[1] = bg[1];
+      c[2] = bg[2];
+    }
   }
 }
 

@@ -14,12 +14,18 @@ struct FrameBuffer {
   int width = 0;
   int height = 0;
   Image8 color;                      // 3 channels, sRGB
-  std::vector<double> depth;         // window z in [0, 1], +inf = background
-  std::vector<std::int32_t> object;  // scene object index, -1 = background
-  std::vector<std::int32_t> primitive;  // primitive index, -1 = background
+  UninitVector<double> depth;         // window z in [0, 1], +inf = background
+  UninitVector<std::int32_t> object;  // scene object index, -1 = background
+  UninitVector<std::int32_t> primitive;  // primitive index, -1 = background
 
   FrameBuffer() = default;
   FrameBuffer(int w, int h, const std::array<std::uint8_t, 3>& background);
+  // Every pixel left uninitialised: for a renderer that writes each one exactly once (its
+  // tiles clear their own rectangle with clearRect, in parallel, then draw) — no
+  // frame-sized clearing in one thread before the frame.
+  static FrameBuffer uninitialised(int w, int h);
+  // Background in [x0, x1) x [y0, y1): colour, depth +inf, no object, no primitive.
+  void clearRect(int x0, int y0, int x1, int y1, const std::array<std::uint8_t, 3>& background);
 
   std::size_t pixels() const { return std::size_t(width) * std::size_t(height); }
   std::size_t covered() const;

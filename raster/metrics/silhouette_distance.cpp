@@ -9,7 +9,7 @@
 
 namespace qacc {
 
-std::vector<std::uint8_t> boundaryMask(const std::vector<std::int32_t>& ids, int width, int height) {
+std::vector<std::uint8_t> boundaryMask(const UninitVector<std::int32_t>& ids, int width, int height) {
   std::vector<std::uint8_t> m(std::size_t(width) * std::size_t(height), 0);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {

@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <limits>
 
@@ -111,9 +112,12 @@ FrameBuffer renderReference(const Scene& scene, int threads, ReferenceStats* sta
   if (stats) stats->setup_ms = msSince(t0);
 
   const auto t1 = std::chrono::steady_clock::now();
-  FrameBuffer fb(W, H, toSrgb8(scene.background));
-  std::vector<int> itemAt(fb.pixels(), -1);
-  std::vector<int> capAt(fb.pixels(), -1);
+  // Frame-sized state is not cleared up front: each tile clears its own rectangle (in
+  // parallel, first touching its pages) before drawing, and the tiles cover the frame.
+  const auto background = toSrgb8(scene.background);
+  FrameBuffer fb = FrameBuffer::uninitialised(W, H);
+  UninitVector<int> itemAt(fb.pixels());
+  UninitVector<int> capAt(fb.pixels());
   std::vector<Eigen::Vector3d> exactNormal;
   if (!scene.exact_surfaces.empty()) exactNormal.assign(fb.pixels(), Eigen::Vector3d::Zero());
   std::vector<CsgHit> csgAt;  // the winning leaf of a CSG item
@@ -123,6 +127,11 @@ FrameBuffer renderReference(const Scene& scene, int threads, ReferenceStats* sta
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : tests)
   for (int t = 0; t < bins.tiles(); ++t) {
     const ScreenBox tile = bins.tile(t);
+    fb.clearRect(tile.x0, tile.y0, tile.x1, tile.y1, background);
+    for (int y = tile.y0; y < tile.y1; ++y) {
+      std::fill_n(itemAt.begin() + std::ptrdiff_t(std::size_t(y) * W + tile.x0), tile.x1 - tile.x0, -1);
+      std::fill_n(capAt.begin() + std::ptrdiff_t(std::size_t(y) * W + tile.x0), tile.x1 - tile.x0, -1);
+    }
     for (int k : bins.bin(t)) {
       const Item& it = items[std::size_t(k)];
       const ScreenBox b = it.box.intersect(tile);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <random>
 
+#include "raster/image/frame_buffer.h"
 #include "raster/image/pfm_io.h"
 #include "raster/image/png_io.h"
 
@@ -59,4 +60,28 @@ TEST(ImageIO, PfmRoundTripKeepsInfinityAndRowOrder) {
 TEST(ImageIO, ReadingAMissingFileThrows) {
   EXPECT_THROW(readPng("/nonexistent/x.png"), std::runtime_error);
   EXPECT_THROW(readPfm("/nonexistent/x.pfm"), std::runtime_error);
+}
+
+TEST(FrameBuffer, ClearRectWritesTheBackgroundInItsRectangleOnly) {
+  FrameBuffer fb = FrameBuffer::uninitialised(5, 4);
+  fb.clearRect(0, 0, 5, 4, {1, 2, 3});
+  fb.object[0] = 7;
+  fb.depth[0] = 0.5;
+  fb.clearRect(1, 1, 4, 3, {9, 8, 7});
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 5; ++x) {
+      const std::size_t i = std::size_t(y) * 5 + std::size_t(x);
+      const bool in = x >= 1 && x < 4 && y >= 1 && y < 3;
+      EXPECT_EQ(fb.color.at(x, y, 0), in ? 9 : 1);
+      EXPECT_EQ(fb.color.at(x, y, 2), in ? 7 : 3);
+      if (i == 0) continue;
+      EXPECT_EQ(fb.object[i], -1);
+      EXPECT_EQ(fb.primitive[i], -1);
+      EXPECT_TRUE(std::isinf(fb.depth[i]));
+    }
+  EXPECT_EQ(fb.object[0], 7);  // outside the rectangle: untouched
+  EXPECT_EQ(fb.depth[0], 0.5);
+  const FrameBuffer filled(5, 4, {4, 5, 6});  // the constructor clears the whole frame
+  EXPECT_EQ(filled.covered(), 0u);
+  EXPECT_EQ(filled.color.at(4, 3, 1), 5);
 }

@@ -166,7 +166,7 @@ TEST(CoverageError, CountsEachKind) {
   EXPECT_EQ(e.spurious, 1u);
   EXPECT_NEAR(e.wrongFraction(), 2.0 / 3.0, 1e-15);
   const Image8 m = coverageErrorMask(r, t);
-  EXPECT_EQ(m.data, (std::vector<std::uint8_t>{0, 1, 2, 3}));
+  EXPECT_EQ(m.data, (UninitVector<std::uint8_t>{0, 1, 2, 3}));
 }
 
 TEST(DepthError, WindowLsbAndView) {

@@ -1,5 +1,6 @@
-// qacc batch SCENE... --out DIR [--engine E] [--threads N] [--width W --height H]
-// Renders every scene into DIR/<scene file name>.png and prints a table.
+// qacc batch SCENE... --out DIR [--engine E] [--threads N] [--width W --height H] [--no-accuracy]
+// Renders every scene into DIR/<scene file name>.png and prints a table (hw engines: each
+// row followed by its accuracy line against the reference, unless --no-accuracy).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -17,6 +18,7 @@ struct BatchArgs {
   std::string out = "out";
   std::string engine = "reference";
   int threads = 0, width = 0, height = 0;
+  bool accuracy = true;
 };
 }  // namespace
 
@@ -29,6 +31,7 @@ void addBatchCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--width", args->width, "Image width override");
   cmd->add_option("--height", args->height, "Image height override");
+  cmd->add_flag("!--no-accuracy", args->accuracy, "hw engines: skip the accuracy line (no reference render)");
   cmd->callback([args] {
     checkImageSize(args->width, args->height);
     std::filesystem::create_directories(args->out);
@@ -41,11 +44,13 @@ void addBatchCommand(CLI::App& app) {
       job.width = args->width;
       job.height = args->height;
       job.options.threads = args->threads;
+      job.options.report_accuracy = args->accuracy;
       job.color_path = (std::filesystem::path(args->out) / std::filesystem::path(path).stem()).string() + ".png";
       const RenderJobResult r = runRenderJob(job);
       const std::string size = std::to_string(r.scene.width) + "x" + std::to_string(r.scene.height);
       std::printf("%-16s %10zu %11s %14zu %12.1f\n", r.scene.name.c_str(), r.scene.primitives.size(), size.c_str(),
                   r.result.fb.covered(), r.result.host_ms);
+      if (!r.result.accuracy.empty()) std::printf("  %s\n", r.result.accuracy.c_str());
       std::fflush(stdout);
       total += r.result.host_ms;
     }

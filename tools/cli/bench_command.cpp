@@ -1,20 +1,32 @@
-// qacc bench [SCENE...] [--width W --height H] [--config FILE] [--threads N] [--repeat N]
-// Accelerator benchmark (issue 3): per scene (default: molecule and sphereflake at
-// 1920x1080) the reference and `hw` wall time per frame (best of --repeat), the
-// `hw-cycle` simulated cycles, its host CPU seconds (setup, pixel datapath pass, timing
-// loop, final shading), the wall time of the pixel datapath pass (pixel_trace.h), the
-// simulation rate of the timing loop alone (simulated cycles per wall second, one core),
-// the slowdown (host seconds / modeled seconds), and the modeled frame time and fps at the
-// configured clock; the header gives the configuration's silicon cost (cost_model.h).
-// Prints a table; nothing is asserted.
+// qacc bench [SCENE...] [--width W --height H] [--config FILE] [--threads N,...] [--repeat N]
+//            [--no-cycle] [--json FILE]
+// Accelerator benchmark (issues 3 and 16): per scene (default: molecule and sphereflake at
+// 1920x1080) and per thread count (default: 1 and all cores), the reference, `hw` and
+// `hw-cycle` wall time per frame (best of --repeat, the engines alternating so that they
+// see the same machine load), the `hw` tested pixels per second (per thread too), the
+// `hw-cycle` simulated cycles, the wall time of its pixel datapath pass (pixel_trace.h),
+// the simulation rate of the timing loop alone (simulated cycles per wall second, one
+// core), the slowdown of the whole `hw-cycle` frame against the modeled clock, and the
+// modeled frame time at the configured clock; the header gives the configuration's
+// silicon cost (cost_model.h) and the load average. Then the ratios the performance
+// targets are stated in (docs/PERFORMANCE.md): hw against the reference at each thread
+// count, and each engine from the first thread count to the last. --json FILE writes all
+// of it with the machine (CPU model, cores). Nothing is asserted.
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <ctime>
+#include <cstdlib>
+#include <fstream>
 #include <memory>
+#include <stdexcept>
+#include <string>
+#include <thread>
 
-#include "hw_model/report/cost_model.h"
 #include "hw_model/engines/cycle_engine.h"
 #include "hw_model/engines/functional_engine.h"
+#include "hw_model/report/cost_model.h"
 #include "modeling/loader/scene_loader.h"
 #include "raster/reference/reference_renderer.h"
 #include "tools/cli/commands.h"
@@ -28,13 +40,88 @@ struct BenchArgs {
   std::vector<std::string> scenes;
   int width = 1920, height = 1080;
   std::string config;
-  int threads = 0;
+  std::vector<int> threads;
   int repeat = 3;
   bool cycle = true;
+  std::string json;
+};
+
+struct BenchRun {
+  std::string scene;
+  std::size_t primitives = 0;
+  int threads = 0;
+  double refMs = 1e300, hwMs = 1e300, cycleMs = 1e300;
+  std::uint64_t tested = 0, cycles = 0;
+  double loopS = 0, traceS = 0, frameMs = 0;
+  double testedPerSecond() const { return double(tested) / (hwMs * 1e-3); }
+  double loopRate() const { return loopS > 0 ? double(cycles) / loopS : 0.0; }
 };
 
 double wallMs(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string cpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
+    }
+  return "unknown";
+}
+
+double loadAverage() {
+  double l[1] = {0};
+  return getloadavg(l, 1) == 1 ? l[0] : -1.0;
+}
+
+BenchRun benchOne(const Scene& scene, const HwConfig& cfg, int threads, int repeat, bool cycle) {
+  BenchRun b;
+  b.scene = scene.name;
+  b.primitives = scene.primitives.size();
+  b.threads = threads;
+  for (int i = 0; i < repeat; ++i) {
+    auto t0 = std::chrono::steady_clock::now();
+    renderReference(scene, threads);
+    b.refMs = std::min(b.refMs, wallMs(t0));
+    t0 = std::chrono::steady_clock::now();
+    const HwRender hw = renderHw(scene, cfg, threads);
+    b.hwMs = std::min(b.hwMs, wallMs(t0));
+    b.tested = hw.stats.pixels.tested;
+    if (!cycle) continue;
+    t0 = std::chrono::steady_clock::now();
+    const HwRender r = renderHwCycle(scene, cfg, threads);
+    const double ms = wallMs(t0);
+    if (ms < b.cycleMs) {
+      b.cycleMs = ms;
+      b.loopS = r.stats.loop_seconds;
+      b.traceS = r.stats.trace_seconds;
+    }
+    b.cycles = r.stats.cycles;
+    b.frameMs = r.stats.frameSeconds() * 1e3;
+  }
+  if (!cycle) b.cycleMs = 0;
+  return b;
+}
+
+nlohmann::json toJson(const BenchRun& b) {
+  return {{"scene", b.scene},
+          {"primitives", b.primitives},
+          {"threads", b.threads},
+          {"ref_ms", b.refMs},
+          {"hw_ms", b.hwMs},
+          {"hw_cycle_ms", b.cycleMs},
+          {"cycles", b.cycles},
+          {"loop_seconds", b.loopS},
+          {"trace_seconds", b.traceS},
+          {"loop_cycles_per_second", b.loopRate()},
+          {"tested_pixels", b.tested},
+          {"tested_pixels_per_second", b.testedPerSecond()},
+          {"tested_pixels_per_second_per_thread", b.testedPerSecond() / b.threads},
+          {"modeled_frame_ms", b.frameMs},
+          {"hw_cycle_slowdown", b.frameMs > 0 ? b.cycleMs / b.frameMs : 0.0}};
 }
 
 void runBench(const BenchArgs& a) {
@@ -43,41 +130,63 @@ void runBench(const BenchArgs& a) {
   std::vector<std::string> scenes = a.scenes;
   if (scenes.empty())
     scenes = {std::string(QACC_SOURCE_DIR) + "/scenes/molecule.json", std::string(QACC_SOURCE_DIR) + "/scenes/sphereflake.json"};
-  std::printf("config %s, %d MHz, P=%d, %.0f kGE (cost model), %dx%d, threads %d, best of %d\n", cfg.name.c_str(),
-              int(cfg.clock_mhz), cfg.pipelines, CostModel::of(cfg).totalGe() / 1e3, a.width, a.height, a.threads,
-              a.repeat);
-  std::printf("%-14s %8s %10s %10s %7s %12s %9s %9s %12s %9s %10s %8s\n", "scene", "prims", "ref ms", "hw ms",
-              "hw/ref", "cycles", "host s", "trace s", "loop cyc/s", "slowdown", "frame ms", "fps");
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<int> threads = a.threads;
+  if (threads.empty()) threads = cores > 1 ? std::vector<int>{1, cores} : std::vector<int>{1};
+  const double load0 = loadAverage();
+  std::printf("config %s, %d MHz, P=%d, %.0f kGE (cost model), %dx%d, best of %d; %s, %d cores, load %.2f\n",
+              cfg.name.c_str(), int(cfg.clock_mhz), cfg.pipelines, CostModel::of(cfg).totalGe() / 1e3, a.width,
+              a.height, a.repeat, cpuModel().c_str(), cores, load0);
+  std::printf("%-14s %7s %3s %9s %9s %7s %12s %10s %11s %9s %11s %9s %9s\n", "scene", "prims", "thr", "ref ms",
+              "hw ms", "ref/hw", "tested px/s", "cycle ms", "cycles", "trace ms", "loop cyc/s", "slowdown",
+              "frame ms");
+  std::vector<BenchRun> runs;
   for (const std::string& path : scenes) {
     Scene scene = loadScene(path);
     applyImageSize(scene, a.width, a.height);
-    double refMs = 1e300, hwMs = 1e300;
-    for (int i = 0; i < a.repeat; ++i) {
-      auto t0 = std::chrono::steady_clock::now();
-      renderReference(scene, a.threads);
-      refMs = std::min(refMs, wallMs(t0));
-      t0 = std::chrono::steady_clock::now();
-      renderHw(scene, cfg, a.threads);
-      hwMs = std::min(hwMs, wallMs(t0));
+    for (int t : threads) {
+      const BenchRun b = benchOne(scene, cfg, t, a.repeat, a.cycle);
+      std::printf("%-14s %7zu %3d %9.1f %9.1f %7.2f %12.3g %10.1f %11llu %9.1f %11.3g %9.2f %9.3f\n",
+                  b.scene.c_str(), b.primitives, b.threads, b.refMs, b.hwMs, b.refMs / b.hwMs, b.testedPerSecond(),
+                  b.cycleMs, (unsigned long long)b.cycles, b.traceS * 1e3, b.loopRate(),
+                  b.frameMs > 0 ? b.cycleMs / b.frameMs : 0.0, b.frameMs);
+      std::fflush(stdout);
+      runs.push_back(b);
     }
-    std::uint64_t cycles = 0;
-    double hostS = 0, frameMs = 0, loopS = 0, traceS = 0;
-    if (a.cycle) {
-      const std::clock_t c0 = std::clock();
-      const HwRender r = renderHwCycle(scene, cfg, a.threads);
-      // CPU seconds of the process; the cycle loop itself is single-threaded.
-      hostS = double(std::clock() - c0) / CLOCKS_PER_SEC;
-      cycles = r.stats.cycles;
-      frameMs = r.stats.frameSeconds() * 1e3;
-      loopS = r.stats.loop_seconds;
-      traceS = r.stats.trace_seconds;
-    }
-    std::printf("%-14s %8zu %10.1f %10.1f %7.2f %12llu %9.2f %9.3f %12.3g %9.0f %10.3f %8.1f\n", scene.name.c_str(),
-                scene.primitives.size(), refMs, hwMs, hwMs / refMs, (unsigned long long)cycles, hostS, traceS,
-                loopS > 0 ? double(cycles) / loopS : 0.0, frameMs > 0 ? hostS * 1e3 / frameMs : 0.0, frameMs,
-                frameMs > 0 ? 1e3 / frameMs : 0.0);
-    std::fflush(stdout);
   }
+  // Scaling from the first thread count to the last, per scene and engine.
+  nlohmann::json scaling = nlohmann::json::array();
+  if (threads.size() > 1)
+    for (std::size_t i = 0; i < runs.size(); i += threads.size()) {
+      const BenchRun& lo = runs[i];
+      const BenchRun& hi = runs[i + threads.size() - 1];
+      std::printf("%s: %d -> %d threads: reference x%.2f, hw x%.2f%s\n", lo.scene.c_str(), lo.threads, hi.threads,
+                  lo.refMs / hi.refMs, lo.hwMs / hi.hwMs,
+                  a.cycle ? (", hw-cycle x" + std::to_string(lo.cycleMs / hi.cycleMs).substr(0, 4)).c_str() : "");
+      scaling.push_back({{"scene", lo.scene},
+                         {"from_threads", lo.threads},
+                         {"to_threads", hi.threads},
+                         {"ref_speedup", lo.refMs / hi.refMs},
+                         {"hw_speedup", lo.hwMs / hi.hwMs},
+                         {"hw_cycle_speedup", a.cycle ? lo.cycleMs / hi.cycleMs : 0.0}});
+    }
+  const double load1 = loadAverage();
+  std::printf("load average %.2f at the start, %.2f at the end\n", load0, load1);
+  if (a.json.empty()) return;
+  nlohmann::json doc;
+  doc["format"] = "qacc-bench/1";
+  doc["machine"] = {{"cpu_model", cpuModel()}, {"cores", cores}, {"load_start", load0}, {"load_end", load1}};
+  doc["config"] = cfg.name;
+  doc["clock_mhz"] = cfg.clock_mhz;
+  doc["width"] = a.width;
+  doc["height"] = a.height;
+  doc["repeat"] = a.repeat;
+  doc["runs"] = nlohmann::json::array();
+  for (const BenchRun& b : runs) doc["runs"].push_back(toJson(b));
+  doc["scaling"] = scaling;
+  std::ofstream out(a.json);
+  out << doc.dump(2) << "\n";
+  if (!out) throw std::runtime_error(a.json + ": cannot write the benchmark JSON");
 }
 
 }  // namespace
@@ -89,9 +198,12 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--width", args->width, "Image width")->capture_default_str();
   cmd->add_option("--height", args->height, "Image height")->capture_default_str();
   cmd->add_option("--config", args->config, "Accelerator configuration JSON");
-  cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+  cmd->add_option("--threads", args->threads, "Thread counts, e.g. 1,2 (default: 1 and all cores)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 1024));
   cmd->add_option("--repeat", args->repeat, "Frames timed per engine (best is kept)")->capture_default_str()->check(CLI::Range(1, 100));
   cmd->add_flag("!--no-cycle", args->cycle, "Skip the hw-cycle run");
+  cmd->add_option("--json", args->json, "Also write the results as JSON (with the machine)");
   cmd->callback([args] { runBench(*args); });
 }
 

@@ -1,6 +1,6 @@
 // qacc render SCENE -o out.png [--engine ...] [--width W --height H] [--ids ids.png]
 //             [--depth depth.pfm] [--stats stats.json] [--config hw.json] [--level N]
-//             [--threads N]
+//             [--threads N] [--no-accuracy]
 #include <cstdio>
 #include <memory>
 
@@ -25,6 +25,8 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--config", job->options.config_path, "Accelerator configuration JSON");
   cmd->add_option("--level", job->options.level, "Tessellation level (facets engine)");
   cmd->add_option("--shading", job->options.shading, "Facet shading: gouraud|pixel (facets engine)");
+  cmd->add_flag("!--no-accuracy", job->options.report_accuracy,
+                "hw engines: skip the accuracy line (no reference render)");
   cmd->add_option("--threads", job->options.threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->callback([job] {
     const RenderJobResult r = runRenderJob(*job);

@@ -23,6 +23,7 @@ struct EngineResult {
   FrameBuffer fb;
   double host_ms = 0;             // wall time of the render itself
   std::vector<std::string> notes; // lines the engine wants printed (stats, accuracy...)
+  std::string accuracy;           // hw engines: the accuracy line (also in notes), empty with --no-accuracy
 };
 
 // Throws std::invalid_argument for an unknown engine or one not built in.

@@ -40,7 +40,8 @@ bool runHwEngine(const std::string& engine, const Scene& scene, const EngineOpti
   for (const auto& l : stats.summaryLines()) out.notes.push_back(l);
   if (options.report_accuracy) {
     const FrameBuffer ref = renderReference(scene, options.threads);
-    out.notes.push_back(accuracyReport(ref, out.fb, scene.camera, cfg.zbuffer_bits).line());
+    out.accuracy = accuracyReport(ref, out.fb, scene.camera, cfg.zbuffer_bits).line();
+    out.notes.push_back(out.accuracy);
   }
   return true;
 }

@@ -3,12 +3,20 @@
 #include "modeling/loader/scene_loader.h"
 #include "raster/image/pfm_io.h"
 #include "raster/image/png_io.h"
+#include "tools/engines/hw_engine.h"
 #include "tools/engines/image_size.h"
 
 namespace qacc {
 
 RenderJobResult runRenderJob(const RenderJob& job) {
   RenderJobResult out;
+  if (!job.options.report_accuracy) {
+    bool hw = false;
+    for (const auto& n : hwEngineNames()) hw |= n == job.engine;
+    if (!hw)
+      throw std::invalid_argument("--no-accuracy applies to the accelerator engines only (engine '" + job.engine +
+                                  "' prints no accuracy line)");
+  }
   out.scene = loadScene(job.scene_path);
   applyImageSize(out.scene, job.width, job.height);
   out.result = runEngine(job.engine, out.scene, job.options);

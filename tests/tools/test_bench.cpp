@@ -1,0 +1,81 @@
+// `qacc bench --json` (the fields docs/PERFORMANCE.md is kept from) and `--no-accuracy`
+// (render and batch: no reference render for the accuracy line; refused by engines that
+// print none), end to end through the command line.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+// Runs `qacc ARGS`; returns the exit status and the output (stdout and stderr).
+int runQacc(const std::string& args, const std::string& name, std::string& text) {
+  const std::string log = (std::filesystem::path(QACC_BINARY_DIR) / (name + ".log")).string();
+  const int status = std::system((std::string(QACC_EXE) + " " + args + " > " + log + " 2>&1").c_str());
+  std::ifstream lf(log);
+  text.assign(std::istreambuf_iterator<char>(lf), std::istreambuf_iterator<char>());
+  return status;
+}
+
+const std::string kScenes = std::string(QACC_SOURCE_DIR) + "/scenes/";
+
+}  // namespace
+
+TEST(BenchCommand, JsonHasEveryFieldPerSceneAndThreadCount) {
+  const std::string json = (std::filesystem::path(QACC_BINARY_DIR) / "bench_test.json").string();
+  std::filesystem::remove(json);
+  std::string text;
+  ASSERT_EQ(runQacc("bench " + kScenes + "torus.json --width 64 --height 48 --repeat 1 --threads 1,2 --json " + json,
+                    "bench_test", text),
+            0)
+      << text;
+  std::ifstream in(json);
+  ASSERT_TRUE(in) << text;
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  EXPECT_FALSE(doc.at("machine").at("cpu_model").get<std::string>().empty());
+  EXPECT_GE(doc.at("machine").at("cores").get<int>(), 1);
+  ASSERT_EQ(doc.at("runs").size(), 2u);
+  int threads = 1;
+  for (const auto& r : doc.at("runs")) {
+    EXPECT_EQ(r.at("scene"), "torus");
+    EXPECT_EQ(r.at("threads").get<int>(), threads++);
+    for (const char* k : {"ref_ms", "hw_ms", "hw_cycle_ms", "loop_cycles_per_second", "tested_pixels_per_second"})
+      EXPECT_GT(r.at(k).get<double>(), 0.0) << k;
+    EXPECT_GT(r.at("cycles").get<std::uint64_t>(), 0u);
+  }
+  // The same frame on one and two threads: the same cycle count.
+  EXPECT_EQ(doc["runs"][0]["cycles"], doc["runs"][1]["cycles"]);
+  ASSERT_EQ(doc.at("scaling").size(), 1u);
+  EXPECT_GT(doc["scaling"][0].at("hw_speedup").get<double>(), 0.0);
+  EXPECT_NE(text.find("1 -> 2 threads"), std::string::npos) << text;
+}
+
+TEST(NoAccuracy, SkipsTheAccuracyLineOfTheHwEngines) {
+  const std::string out = (std::filesystem::path(QACC_BINARY_DIR) / "no_accuracy.png").string();
+  const std::string render = "render " + kScenes + "torus.json --width 64 --height 48 -o " + out + " --engine ";
+  std::string with, without;
+  ASSERT_EQ(runQacc(render + "hw", "accuracy_on", with), 0) << with;
+  EXPECT_NE(with.find("accuracy vs reference"), std::string::npos) << with;
+  ASSERT_EQ(runQacc(render + "hw-cycle --no-accuracy", "accuracy_off", without), 0) << without;
+  EXPECT_EQ(without.find("accuracy vs reference"), std::string::npos) << without;
+  const std::string dir = (std::filesystem::path(QACC_BINARY_DIR) / "no_accuracy_batch").string();
+  const std::string batch = "batch " + kScenes + "torus.json --width 64 --height 48 --out " + dir + " --engine hw";
+  ASSERT_EQ(runQacc(batch, "batch_accuracy_on", with), 0) << with;
+  EXPECT_NE(with.find("accuracy vs reference"), std::string::npos) << with;
+  ASSERT_EQ(runQacc(batch + " --no-accuracy", "batch_accuracy_off", without), 0) << without;
+  EXPECT_EQ(without.find("accuracy vs reference"), std::string::npos) << without;
+}
+
+TEST(NoAccuracy, RefusedByEnginesWithoutAnAccuracyLine) {
+  std::string text;
+  const std::string out = (std::filesystem::path(QACC_BINARY_DIR) / "no_accuracy_ref.png").string();
+  EXPECT_NE(runQacc("render " + kScenes + "torus.json --width 64 --height 48 -o " + out +
+                        " --engine reference --no-accuracy",
+                    "accuracy_refused", text),
+            0);
+  EXPECT_NE(text.find("qacc: error: --no-accuracy"), std::string::npos) << text;
+}
