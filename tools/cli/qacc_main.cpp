@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   qacc::addCompareCommand(app);
   qacc::addReduceCommand(app);
   qacc::addBenchCommand(app);
+  qacc::addSweepCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
