@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   qacc::addReduceCommand(app);
   qacc::addBenchCommand(app);
   qacc::addSweepCommand(app);
+  qacc::addAutosizeCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

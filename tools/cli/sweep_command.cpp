@@ -41,7 +41,9 @@ std::string shellQuote(const std::string& s) {
 
 void makeReport(const std::string& out) {
   const std::string script = std::string(QACC_SOURCE_DIR) + "/tools/plot_sweep.py";
-  const std::string cmd = "python3 " + shellQuote(script) + " " + shellQuote(out);
+  // Debian's interpreter, where python3-matplotlib is, before any other python3 on PATH.
+  const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string cmd = python + " " + shellQuote(script) + " " + shellQuote(out);
   if (std::system(cmd.c_str()) != 0)
     std::fprintf(stderr, "qacc: warning: the plots and report.html were not made (%s failed; needs python3-matplotlib)\n",
                  cmd.c_str());
