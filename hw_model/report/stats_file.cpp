@@ -74,4 +74,30 @@ void writeStatsFiles(const std::string& path, const nlohmann::ordered_json& j) {
   if (!out || !c) throw std::invalid_argument(path + ": cannot write statistics");
 }
 
+void writeResultRows(const std::string& out, const std::string& format, const nlohmann::ordered_json& rows) {
+  std::string base = out;
+  for (const char* ext : {".json", ".csv"})
+    if (base.size() > 5 && base.compare(base.size() - std::string(ext).size(), std::string::npos, ext) == 0)
+      base.resize(base.size() - std::string(ext).size());
+  nlohmann::ordered_json j;
+  j["format"] = format;
+  j["rows"] = rows;
+  std::ofstream js(base + ".json");
+  js << j.dump(1) << "\n";
+  std::ofstream csv(base + ".csv");
+  std::vector<std::string> header;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    std::vector<std::string> keys, values;
+    flattenJson(rows[r], keys, values);
+    if (r == 0) {
+      header = keys;
+      for (std::size_t i = 0; i < keys.size(); ++i) csv << (i ? "," : "") << keys[i];
+      csv << "\n";
+    }
+    for (std::size_t i = 0; i < values.size(); ++i) csv << (i ? "," : "") << values[i];
+    csv << "\n";
+  }
+  if (!js || !csv) throw std::invalid_argument(base + ".json/.csv: cannot write");
+}
+
 }  // namespace qacc

@@ -18,4 +18,8 @@ std::string jsonToCsvRow(const nlohmann::ordered_json& j);
 // Writes `path` (JSON) and `path` with its extension replaced by .csv; throws on failure.
 void writeStatsFiles(const std::string& path, const nlohmann::ordered_json& j);
 
+// A table of rows (objects with the same flat keys): OUT.json ({"format", "rows"}) and
+// OUT.csv (a header and one line per row); `out` may end in .json, .csv or neither.
+void writeResultRows(const std::string& out, const std::string& format, const nlohmann::ordered_json& rows);
+
 }  // namespace qacc

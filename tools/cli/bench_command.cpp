@@ -12,7 +12,10 @@
 #include <ctime>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "hw_model/report/cost_model.h"
+#include "hw_model/report/stats_file.h"
 #include "hw_model/engines/cycle_engine.h"
 #include "hw_model/engines/functional_engine.h"
 #include "modeling/loader/scene_loader.h"
@@ -30,6 +33,7 @@ struct BenchArgs {
   int threads = 0;
   int repeat = 3;
   bool cycle = true;
+  std::string out;  // OUT.json and OUT.csv, one row per scene
 };
 
 double wallMs(std::chrono::steady_clock::time_point t0) {
@@ -44,6 +48,7 @@ void runBench(const BenchArgs& a) {
   std::printf("config %s, %d MHz, P=%d, %.0f kGE (cost model), %dx%d, threads %d, best of %d\n", cfg.name.c_str(),
               int(cfg.clock_mhz), cfg.pipelines, CostModel::of(cfg).totalGe() / 1e3, a.width, a.height, a.threads,
               a.repeat);
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   std::printf("%-14s %8s %10s %10s %7s %12s %9s %9s %12s %9s %10s %8s\n", "scene", "prims", "ref ms", "hw ms",
               "hw/ref", "cycles", "host s", "trace s", "loop cyc/s", "slowdown", "frame ms", "fps");
   for (const std::string& path : scenes) {
@@ -76,7 +81,26 @@ void runBench(const BenchArgs& a) {
                 loopS > 0 ? double(cycles) / loopS : 0.0, frameMs > 0 ? hostS * 1e3 / frameMs : 0.0, frameMs,
                 frameMs > 0 ? 1e3 / frameMs : 0.0);
     std::fflush(stdout);
+    nlohmann::ordered_json row;
+    row["scene"] = scene.name;
+    row["config"] = cfg.name;
+    row["width"] = a.width;
+    row["height"] = a.height;
+    row["threads"] = a.threads;
+    row["primitives"] = scene.primitives.size();
+    row["reference_ms"] = refMs;
+    row["hw_ms"] = hwMs;
+    row["hw_over_reference"] = hwMs / refMs;
+    row["cycles"] = cycles;
+    row["host_cpu_seconds"] = hostS;
+    row["trace_seconds"] = traceS;
+    row["loop_cycles_per_second"] = loopS > 0 ? double(cycles) / loopS : 0.0;
+    row["frame_ms"] = frameMs;
+    row["fps"] = frameMs > 0 ? 1e3 / frameMs : 0.0;
+    row["gates_kge"] = CostModel::of(cfg).totalGe() / 1e3;
+    rows.push_back(row);
   }
+  if (!a.out.empty()) writeResultRows(a.out, "qacc-bench/1", rows);
 }
 
 }  // namespace
@@ -91,6 +115,7 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--repeat", args->repeat, "Frames timed per engine (best is kept)")->capture_default_str()->check(CLI::Range(1, 100));
   cmd->add_flag("!--no-cycle", args->cycle, "Skip the hw-cycle run");
+  cmd->add_option("--out", args->out, "Write the table as OUT.json and OUT.csv");
   cmd->callback([args] { runBench(*args); });
 }
 
