@@ -31,6 +31,7 @@ struct SweepArgs {
   std::string cache;
   int threads = 0;
   bool report = true;
+  bool noCache = false;
 };
 
 std::string shellQuote(const std::string& s) {
@@ -99,6 +100,7 @@ void runSweepCommand(const SweepArgs& a) {
   const SweepSpec spec = loadSweepSpec(a.spec);
   const Shard shard = a.shard.empty() ? Shard{} : parseShard(a.shard);
   ReferenceCache cache(a.cache);
+  if (a.noCache) cache.disable();
   SweepEvaluator ev(spec.engine, a.threads, cache);
   ev.setThumbnails(a.out, spec.thumbnail_width);
   fs::create_directories(a.out);
@@ -120,6 +122,7 @@ void addSweepCommand(CLI::App& app) {
   cmd->add_option("--merge", args->merge, "Merge the result directories of the shards into --out")->expected(1, -1);
   cmd->add_option("--cache", args->cache, "Reference cache directory (default $QACC_CACHE or ~/.cache/qacc)");
   cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+  cmd->add_flag("--no-cache", args->noCache, "Render the reference for every item (no reference cache)");
   cmd->add_flag("!--no-report", args->report, "Do not run tools/plot_sweep.py (plots, report.html)");
   cmd->callback([args] { runSweepCommand(*args); });
 }

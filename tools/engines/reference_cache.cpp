@@ -92,6 +92,13 @@ FrameBuffer ReferenceCache::get(const std::string& sceneText, const std::string&
   const std::string k = key(sceneText, sceneDir, width, height);
   const fs::path frame = fs::path(dir_) / (k + ".frame");
   FrameBuffer fb;
+  if (disabled_) {
+    Scene s = scene();
+    s.width = width;
+    s.height = height;
+    ++renders_;
+    return renderReference(s, threads);
+  }
   if (readFrameBuffer(frame.string(), fb) && fb.width == width && fb.height == height) {
     ++hits_;
     return fb;

@@ -28,12 +28,15 @@ class ReferenceCache {
   // cache, or made by `scene()` (called only on a miss), rendered and stored.
   FrameBuffer get(const std::string& sceneText, const std::string& sceneDir, int width, int height,
                   const std::function<Scene()>& scene, int threads);
+  // Renders every reference and stores none (measures what the cache saves).
+  void disable() { disabled_ = true; }
   std::size_t hits() const { return hits_; }
   std::size_t renders() const { return renders_; }
 
  private:
   std::string dir_;
   std::size_t hits_ = 0, renders_ = 0;
+  bool disabled_ = false;
 };
 
 // Exact binary form of a frame buffer (KEY.frame); read returns false for a missing or bad file.
