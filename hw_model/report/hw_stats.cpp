@@ -53,6 +53,16 @@ nlohmann::ordered_json toJ(const HwStats& s) {
                     {"clip", s.overflow.clip.events},
                     {"shading", s.overflow.shading.events},
                     {"depth_clamps", s.overflow.depth_clamps}};
+  {
+    // Precision lost by the quantised constants, per counter (fixed_point.h quantize(); the
+    // setup unit quantises every datapath's constants, so they count under "setup").
+    nlohmann::ordered_json p;
+    const std::pair<const char*, const OverflowCounter*> d[] = {
+        {"setup", &s.overflow.setup}, {"interpolator", &s.overflow.interpolator}, {"sqrt", &s.overflow.sqrt},
+        {"depth", &s.overflow.depth}, {"clip", &s.overflow.clip},           {"shading", &s.overflow.shading}};
+    for (const auto& [name, c] : d) p[name] = {{"zeroed", c->zeroed}, {"coarse", c->coarse}};
+    j["precision_loss"] = p;
+  }
   j["cycles"] = s.cycles;
   j["fast_forwarded_cycles"] = s.fast_forwarded;
   j["clock_mhz"] = s.clock_mhz;
@@ -101,6 +111,11 @@ std::vector<std::string> HwStats::summaryLines() const {
                 (unsigned long long)pixels.caps, (unsigned long long)pixels.clipped,
                 (unsigned long long)pixels.depth_rejected, (unsigned long long)pixels.written, overdraw(),
                 (unsigned long long)overflow.total());
+  out.push_back(buf);
+  std::snprintf(buf, sizeof buf,
+                "precision loss of the quantised setup constants: %llu non-zero values quantised to zero, %llu left "
+                "with fewer than 8 significant bits",
+                (unsigned long long)overflow.setup.zeroed, (unsigned long long)overflow.setup.coarse);
   out.push_back(buf);
   if (cycles > 0) {
     const double ft = frameSeconds();
