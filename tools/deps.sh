@@ -10,6 +10,8 @@ QACC_PACKAGES=(
   libosmesa6-dev                     # triangles through OSMesa (llvmpipe)
   pymol-data                         # real PDB files for the molecule scene
   python3                            # tools/behaviour_check, plots
+  python3-matplotlib                 # tools/plot_sweep.py: the plots of qacc sweep
+  parallel                           # GNU parallel: sweep shards (README, tests)
 )
 
 qacc_install_deps() {

@@ -1,5 +1,6 @@
 #include "hw_model/config/hw_config.h"
 
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -121,25 +122,63 @@ HwConfig parseHwConfig(const std::string& text, const std::string& file) {
   }
   if (!j.is_object()) throw std::invalid_argument(file + ": expected a JSON object");
   HwConfig c;
+  if (!j.contains("name") && !file.empty()) c.name = std::filesystem::path(file).stem().string();
   for (auto it = j.begin(); it != j.end(); ++it) {
     if (it.key() == "comment" || it.key() == "format") continue;
-    const auto f = fields().find(it.key());
-    if (f == fields().end()) throw std::invalid_argument(file + ": /" + it.key() + ": unknown key");
-    f->second.set(c, it.value(), file + ": /" + it.key());
+    setHwConfigKey(c, it.key(), it.value(), file + ": /" + it.key());
   }
-  if (c.sqrt_radix == 3 || c.divider_radix == 3)
-    throw std::invalid_argument(file + ": radix must be 2 or 4");
-  if (c.depth_frac_bits + 2 > c.depth_bits)
-    throw std::invalid_argument(file + ": depth_bits must exceed depth_frac_bits by at least 2");
-  if (c.zbuffer_bits > c.depth_frac_bits)
-    throw std::invalid_argument(file + ": zbuffer_bits must not exceed depth_frac_bits");
-  if (c.delta_bits < 2 * c.value_bits - 8)
-    throw std::invalid_argument(file + ": delta_bits must be at least 2 value_bits - 8");
-  if (c.interp_acc_bits < c.delta_bits + c.interp_frac_bits + 2)
-    throw std::invalid_argument(file + ": interp_acc_bits must hold delta_bits + interp_frac_bits + 2");
-  if (c.unit_frac_bits + 2 > c.normal_bits + 2 || c.unit_frac_bits > 28)
-    throw std::invalid_argument(file + ": unit_frac_bits too large for normal_bits");
+  checkHwConfig(c, file);
   return c;
+}
+
+void checkHwConfig(const HwConfig& c, const std::string& file) {
+  auto fail = [&](const std::string& key, const std::string& why) {
+    throw std::invalid_argument(file + ": /" + key + ": " + why);
+  };
+  if (c.sqrt_radix == 3) fail("sqrt_radix", "radix must be 2 or 4");
+  if (c.divider_radix == 3) fail("divider_radix", "radix must be 2 or 4");
+  if (c.depth_frac_bits + 2 > c.depth_bits)
+    fail("depth_bits", std::to_string(c.depth_bits) + " must exceed depth_frac_bits (" +
+                           std::to_string(c.depth_frac_bits) + ") by at least 2: a sign bit and the integer bit of z = 1");
+  if (c.zbuffer_bits > c.depth_frac_bits)
+    fail("zbuffer_bits", std::to_string(c.zbuffer_bits) + " exceeds depth_frac_bits (" +
+                             std::to_string(c.depth_frac_bits) + "): the stored depth would have bits the datapath never computed");
+  if (c.delta_bits < 2 * c.value_bits - 8)
+    fail("delta_bits", std::to_string(c.delta_bits) + " is below 2 value_bits - 8 (" +
+                           std::to_string(2 * c.value_bits - 8) + "): Δ = b² - ac would lose more than the 8 guard bits of its products");
+  if (c.interp_acc_bits < c.delta_bits + c.interp_frac_bits + 2)
+    fail("interp_acc_bits", std::to_string(c.interp_acc_bits) + " cannot hold delta_bits + interp_frac_bits + 2 (" +
+                                std::to_string(c.delta_bits + c.interp_frac_bits + 2) + "): the forward differences would overflow");
+  if (c.unit_frac_bits > c.normal_bits)
+    fail("unit_frac_bits", std::to_string(c.unit_frac_bits) + " exceeds normal_bits (" + std::to_string(c.normal_bits) +
+                               "): a unit vector cannot carry more fraction bits than the vector it comes from");
+}
+
+std::vector<std::string> hwConfigKeys() {
+  std::vector<std::string> k;
+  for (const auto& f : fields()) k.push_back(f.first);
+  return k;
+}
+
+bool isHwWidthKey(const std::string& key) {
+  static const char* widths[] = {"value_bits", "delta_bits", "interp_frac_bits", "interp_acc_bits", "depth_frac_bits",
+                                 "depth_bits", "clip_bits", "recip_bits", "zbuffer_bits", "normal_bits",
+                                 "unit_frac_bits", "color_frac_bits"};
+  for (const char* w : widths)
+    if (key == w) return true;
+  return false;
+}
+
+void setHwConfigKey(HwConfig& c, const std::string& key, const nlohmann::json& value, const std::string& where) {
+  const auto f = fields().find(key);
+  if (f == fields().end()) throw std::invalid_argument(where + ": unknown accelerator configuration key '" + key + "'");
+  f->second.set(c, value, where);
+}
+
+nlohmann::json hwConfigValue(const HwConfig& c, const std::string& key) {
+  const auto f = fields().find(key);
+  if (f == fields().end()) throw std::invalid_argument("unknown accelerator configuration key '" + key + "'");
+  return f->second.get(c);
 }
 
 HwConfig loadHwConfig(const std::string& path) {

@@ -4,6 +4,9 @@
 // absent keeps its default, an unknown key or a value out of range is refused.
 #pragma once
 #include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "hw_model/datapath/fixed_point.h"
 
@@ -57,8 +60,21 @@ struct HwConfig {
   int zbuffer_bank_busy = 2;     // cycles a bank is occupied by one read-modify-write
 };
 
+// A configuration without a "name" is named after its file (stem of `file`).
 HwConfig loadHwConfig(const std::string& path);
 HwConfig parseHwConfig(const std::string& text, const std::string& file);
+// Every configuration key (sorted), and whether a key is a datapath width (the keys
+// `qacc autosize` narrows and the cost model prices by width).
+std::vector<std::string> hwConfigKeys();
+bool isHwWidthKey(const std::string& key);
+// Sets one key from a JSON value; `where` prefixes the message ("FILE: /json/path").
+// Throws std::invalid_argument for an unknown key or a value out of range.
+void setHwConfigKey(HwConfig& c, const std::string& key, const nlohmann::json& value, const std::string& where);
+// The JSON value of one key.
+nlohmann::json hwConfigValue(const HwConfig& c, const std::string& key);
+// The checks that involve several keys (a width too narrow for another, with the reason);
+// throws std::invalid_argument "where: /key: problem".
+void checkHwConfig(const HwConfig& c, const std::string& where);
 // JSON text of a configuration (every key, so a saved file documents itself).
 std::string hwConfigToJson(const HwConfig& c);
 

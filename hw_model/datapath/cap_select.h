@@ -46,8 +46,13 @@ struct CapSelect {
       return d;
     }
     if (loPlane >= 0) {
-      // f(lo) · 2^(e + 2 Fz) = a lo² + 2 b lo 2^Fz + c 2^(2 Fz)
-      const i128 f = s.a * lo * lo + shl(2 * b * lo, Fz) + shl(c, 2 * Fz);
+      // f at t = (lo - z0) 2^zShift: f · 2^(e + 2 Fz) = a t² + 2 b t 2^Fz + c 2^(2 Fz). t is
+      // held to 16 units: the depth unit's range is 8 (roots beyond are not representable),
+      // and beyond every root the sign of f is the sign of a.
+      const i128 tMax = i128(1) << (Fz + 4);
+      i128 t = shl(lo - s.z0, s.zShift);
+      t = t > tMax ? tMax : (t < -tMax ? -tMax : t);
+      const i128 f = s.a * t * t + shl(2 * b * t, Fz) + shl(c, 2 * Fz);
       if (f <= 0 && ClipTest::keptByAll(s.planes, hRaw, lo, Fz, loPlane)) {
         d.cap = true;
         d.plane = loPlane;

@@ -37,6 +37,9 @@ struct FixedFormat {
 // Overflow events, one counter per datapath (grouped in overflow_counters.h).
 struct OverflowCounter {
   std::uint64_t events = 0;
+  // Precision loss of the setup constants quantised into this datapath (quantize()):
+  // non-zero values that became 0, and non-zero values left with fewer than 8 significant bits.
+  std::uint64_t zeroed = 0, coarse = 0;
 };
 
 // Narrows an exact value to `width` bits with the given overflow mode, counting overflows.
@@ -131,6 +134,10 @@ inline i128 quantize(double v, int scaleBits, int width, OverflowMode mode, Over
       return s > 0 ? (i128(1) << (width - 1)) - 1 : -(i128(1) << (width - 1));
     }
     return fitWidth(i128(s), width, mode, ovf);  // counts the event
+  }
+  if (v != 0) {
+    if (s == 0) ++ovf.zeroed;
+    else if (std::fabs(s) < 256.0) ++ovf.coarse;
   }
   return i128(s);
 }

@@ -12,12 +12,13 @@ struct OverflowCounters {
   OverflowCounter setup, interpolator, sqrt, depth, clip, shading;
   std::uint64_t depth_clamps = 0;
   void add(const OverflowCounters& o) {
-    setup.events += o.setup.events;
-    interpolator.events += o.interpolator.events;
-    sqrt.events += o.sqrt.events;
-    depth.events += o.depth.events;
-    clip.events += o.clip.events;
-    shading.events += o.shading.events;
+    OverflowCounter* mine[] = {&setup, &interpolator, &sqrt, &depth, &clip, &shading};
+    const OverflowCounter* theirs[] = {&o.setup, &o.interpolator, &o.sqrt, &o.depth, &o.clip, &o.shading};
+    for (int i = 0; i < 6; ++i) {
+      mine[i]->events += theirs[i]->events;
+      mine[i]->zeroed += theirs[i]->zeroed;
+      mine[i]->coarse += theirs[i]->coarse;
+    }
     depth_clamps += o.depth_clamps;
   }
   std::uint64_t total() const {

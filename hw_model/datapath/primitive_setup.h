@@ -4,6 +4,7 @@
 // functional (`hw`) and the cycle-level (`hw-cycle`) engines.
 //
 // Scales (Fi = interp_frac_bits, Fz = depth_frac_bits):
+//   (the quadric datapath's depth variable is t = (z - z0) 2^zShift, see z0 below)
 //   a                         integer at 2^e                 (block exponent e of a, b, c)
 //   b(u, v), c(u, v)           interpolators at 2^(e + Fi)   (outputs >> Fi: at 2^e)
 //   Δ(u, v)                    interpolator at 2^(2 ed + Fi) (block exponent ed of Δ)
@@ -44,6 +45,13 @@ struct PrimitiveSetup {
   double tA = 0, tB = 0, tC = 0, tD = 0, tE = 0, tF = 0;  // A u² + B uv + C v² + D u + E v + F
   bool fullRows = false;  // caps or facets can show where Δ < 0: issue whole rows
   // Quadric datapath.
+  // Local depth origin and scale of the quadric datapath: a, b, c describe the quadric in
+  // t = (z - z0) 2^zShift, so that over the primitive's own depth range t spans about
+  // [-1, 1] and a, b and c are commensurate. With z itself (z in [0, 1], a perspective
+  // squeezing every object to a thin slab near 1) f(z) = a z² + 2 b z + c is a difference of
+  // nearly equal terms and a narrow value_bits quantises it to noise (solids turned into caps).
+  i128 z0 = 0;     // depth format (2^Fz)
+  int zShift = 0;  // the scale 2^-zShift of t, >= 0
   int e = 0, ed = 0;
   i128 a = 0;
   int aSign = 0;

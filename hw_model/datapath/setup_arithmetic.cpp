@@ -11,6 +11,49 @@ namespace {
 
 // Affine vector field rows R (3x4, columns u, v, z, 1) → VectorSetup with a shared block
 // exponent so that the largest component over the box uses `bits` bits.
+// The local depth origin z0 and scale 2^-zShift of the quadric datapath (PrimitiveSetup):
+// from the surface depths in [0, 1] at a 5x5 grid of the box's pixels (and, for solids, the
+// depths of the clip planes there), z0 = the middle of their range, 2^-zShift the power of
+// two at least twice the range. A host-side floating-point step, as the rest of setup.
+void chooseDepthOrigin(const WindowPrimitive& w, const Eigen::Matrix4d& T, double umax, double vmax,
+                       const HwConfig& cfg, PrimitiveSetup& s) {
+  const Eigen::Matrix4d Q = T.transpose() * w.Q * T;
+  double lo = 2, hi = -1;
+  auto take = [&](double z) {
+    if (z >= 0 && z <= 1) {
+      lo = std::min(lo, z);
+      hi = std::max(hi, z);
+    }
+  };
+  const double a = Q(2, 2);
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) {
+      const double u = std::round(umax * i / 4), v = std::round(vmax * j / 4);
+      const double b = Q(0, 2) * u + Q(1, 2) * v + Q(2, 3);
+      const double c = Q(0, 0) * u * u + 2 * Q(0, 1) * u * v + Q(1, 1) * v * v + 2 * Q(0, 3) * u + 2 * Q(1, 3) * v + Q(3, 3);
+      const double d = b * b - a * c;
+      if (d >= 0) {
+        const double q = -(b + std::copysign(std::sqrt(d), b));
+        if (a != 0) take(q / a);
+        if (q != 0) take(c / q);
+      }
+      if (s.solid)
+        for (const HalfSpace& h : w.clip) {
+          const Eigen::Vector4d p = T.transpose() * h.p;
+          if (p[2] != 0) take(-(p[0] * u + p[1] * v + p[3]) / p[2]);
+        }
+    }
+  const int Fz = cfg.depth_frac_bits;
+  if (hi < lo) {
+    s.z0 = 0;
+    s.zShift = 0;
+    return;
+  }
+  s.z0 = i128(std::llround(std::ldexp(0.5 * (lo + hi), Fz)));
+  const double range = std::max(hi - lo, std::ldexp(1.0, -Fz / 2));
+  s.zShift = std::clamp(int(std::floor(-std::log2(range))) - 1, 0, Fz / 2);
+}
+
 VectorSetup vectorSetup(const Eigen::Matrix<double, 3, 4>& R, double umax, double vmax, const HwConfig& cfg,
                         OverflowCounter& ovf) {
   double bound = 0;
@@ -119,7 +162,11 @@ PrimitiveSetup setupPrimitive(const Scene& scene, int index, const Eigen::Matrix
                 quantize(-pl[3] / pl[2], zs, zkWidth, cfg.overflow, ovf)};
     s.fullRows = true;
   } else {
-    const Eigen::Matrix4d Ql = T.transpose() * w.Q * T;
+    chooseDepthOrigin(w, T, umax, vmax, cfg, s);
+    Eigen::Matrix4d Tq = T;
+    Tq(2, 2) = std::ldexp(1.0, -s.zShift);
+    Tq(2, 3) = std::ldexp(double(s.z0), -Fz);
+    const Eigen::Matrix4d Ql = Tq.transpose() * w.Q * Tq;
     const double a = Ql(2, 2), bu = Ql(0, 2), bv = Ql(1, 2), b0 = Ql(2, 3);
     const double cuu = Ql(0, 0), cuv = 2 * Ql(0, 1), cvv = Ql(1, 1), cu = 2 * Ql(0, 3), cv = 2 * Ql(1, 3),
                  c0 = Ql(3, 3);

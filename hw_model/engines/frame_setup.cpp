@@ -16,7 +16,11 @@ FrameSetup FrameSetup::build(const Scene& scene, const HwConfig& cfg, int thread
   const int nt = threads > 0 ? threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 16) num_threads(nt)
   for (int i = 0; i < n; ++i) fs.setups[std::size_t(i)] = setupPrimitive(scene, i, M, Minv, cfg, ovf[std::size_t(i)]);
-  for (const auto& o : ovf) fs.overflow.setup.events += o.events;
+  for (const auto& o : ovf) {
+    fs.overflow.setup.events += o.events;
+    fs.overflow.setup.zeroed += o.zeroed;
+    fs.overflow.setup.coarse += o.coarse;
+  }
   fs.lighting = LightingSetup::build(scene, cfg);
   return fs;
 }

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hw_model/report/stats_file.h"
+
 namespace qacc {
 
 void CsgCounters::add(const CsgCounters& o) {
@@ -65,6 +67,16 @@ nlohmann::ordered_json toJ(const HwStats& s) {
                     {"clip", s.overflow.clip.events},
                     {"shading", s.overflow.shading.events},
                     {"depth_clamps", s.overflow.depth_clamps}};
+  {
+    // Precision lost by the quantised constants, per counter (fixed_point.h quantize(); the
+    // setup unit quantises every datapath's constants, so they count under "setup").
+    nlohmann::ordered_json p;
+    const std::pair<const char*, const OverflowCounter*> d[] = {
+        {"setup", &s.overflow.setup}, {"interpolator", &s.overflow.interpolator}, {"sqrt", &s.overflow.sqrt},
+        {"depth", &s.overflow.depth}, {"clip", &s.overflow.clip},           {"shading", &s.overflow.shading}};
+    for (const auto& [name, c] : d) p[name] = {{"zeroed", c->zeroed}, {"coarse", c->coarse}};
+    j["precision_loss"] = p;
+  }
   j["cycles"] = s.cycles;
   j["fast_forwarded_cycles"] = s.fast_forwarded;
   j["clock_mhz"] = s.clock_mhz;
@@ -87,59 +99,22 @@ nlohmann::ordered_json toJ(const HwStats& s) {
   for (const UnitCost& u : s.cost.units)
     cost.push_back({{"name", u.unit}, {"copies", u.copies}, {"ge_each", u.ge_each}, {"rom_bits", u.rom_bits}});
   j["cost"] = {{"total_ge", s.cost.totalGe()}, {"zbuffer_bits_per_pixel", s.cost.zbufferBitsPerPixel}, {"units", cost}};
-  return j;
-}
-
-void flatten(const nlohmann::ordered_json& j, const std::string& prefix, std::vector<std::string>& keys,
-             std::vector<std::string>& values) {
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string k = prefix.empty() ? it.key() : prefix + "." + it.key();
-    if (it->is_object()) {
-      flatten(*it, k, keys, values);
-    } else if (it->is_array()) {
-      for (const auto& u : *it) {
-        const std::string p = k + "." + u["name"].get<std::string>();
-        for (auto f = u.begin(); f != u.end(); ++f) {
-          if (f.key() == "name") continue;
-          keys.push_back(p + "." + f.key());
-          values.push_back(f->dump());
-        }
-      }
-    } else {
-      keys.push_back(k);
-      values.push_back(it->is_string() ? it->get<std::string>() : it->dump());
-    }
+  j["configuration"] = nlohmann::ordered_json::parse(hwConfigToJson(s.configuration));
+  if (s.has_accuracy) {
+    nlohmann::ordered_json a;
+    for (const auto& [k, v] : s.accuracy.fields()) a[k] = jsonNumber(v);
+    j["accuracy"] = a;
   }
+  return j;
 }
 
 }  // namespace
 
 std::string HwStats::toJson() const { return toJ(*this).dump(2) + "\n"; }
 
-std::string HwStats::toCsv() const {
-  std::vector<std::string> keys, values;
-  flatten(toJ(*this), "", keys, values);
-  std::string a, b;
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    a += (i ? "," : "") + keys[i];
-    b += (i ? "," : "") + values[i];
-  }
-  return a + "\n" + b + "\n";
-}
+std::string HwStats::toCsv() const { return jsonToCsvRow(toJ(*this)); }
 
-void HwStats::write(const std::string& path) const {
-  std::ofstream j(path);
-  if (!j) throw std::invalid_argument(path + ": cannot write statistics");
-  j << toJson();
-  std::string csv = path;
-  const auto dot = csv.find_last_of('.');
-  const auto slash = csv.find_last_of('/');
-  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) csv.resize(dot);
-  csv += ".csv";
-  std::ofstream c(csv);
-  if (!c) throw std::invalid_argument(csv + ": cannot write statistics");
-  c << toCsv();
-}
+void HwStats::write(const std::string& path) const { writeStatsFiles(path, toJ(*this)); }
 
 std::vector<std::string> HwStats::summaryLines() const {
   std::vector<std::string> out;
@@ -150,6 +125,11 @@ std::vector<std::string> HwStats::summaryLines() const {
                 (unsigned long long)pixels.caps, (unsigned long long)pixels.clipped,
                 (unsigned long long)pixels.depth_rejected, (unsigned long long)pixels.written, overdraw(),
                 (unsigned long long)overflow.total());
+  out.push_back(buf);
+  std::snprintf(buf, sizeof buf,
+                "precision loss of the quantised setup constants: %llu non-zero values quantised to zero, %llu left "
+                "with fewer than 8 significant bits",
+                (unsigned long long)overflow.setup.zeroed, (unsigned long long)overflow.setup.coarse);
   out.push_back(buf);
   if (cycles > 0) {
     const double ft = frameSeconds();

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "hw_model/report/accuracy_report.h"
 #include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/overflow_counters.h"
 #include "hw_model/report/cost_model.h"
@@ -61,12 +62,16 @@ struct HwStats {
   double trace_seconds = 0;          // hw-cycle: wall time of the pixel datapath pass (pixel_trace.h)
 
   CostModel cost;                    // silicon cost of the configuration
+  HwConfig configuration;            // the resolved configuration (every key is saved)
+  bool has_accuracy = false;         // accuracy against the reference was measured
+  AccuracyReport accuracy;
 
   // The run's identity: engine, configuration (name, clock, cost), scene, image size, threads.
   void describeRun(const std::string& engineName, const HwConfig& cfg, const std::string& sceneName, int w, int h,
                    int nthreads) {
     engine = engineName;
     config = cfg.name;
+    configuration = cfg;
     scene = sceneName;
     width = w;
     height = h;

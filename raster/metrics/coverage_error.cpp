@@ -24,6 +24,7 @@ CoverageError coverageError(const FrameBuffer& reference, const FrameBuffer& tes
   for (std::size_t i = 0; i < e.pixels; ++i) {
     const std::int32_t r = reference.object[i], t = test.object[i];
     if (r >= 0) ++e.reference_covered;
+    if (r >= 0 || t >= 0) ++e.union_covered;
     switch (classify(r, t)) {
       case 1: ++e.wrong_object; break;
       case 2: ++e.pinholes; break;

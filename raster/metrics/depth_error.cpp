@@ -46,6 +46,8 @@ DepthError depthError(const FrameBuffer& reference, const FrameBuffer& test, con
   }
   e.max_lsb = e.max_window * scale;
   e.mean_lsb = e.mean_window * scale;
+  e.max_z24 = std::ldexp(e.max_window, 24);
+  e.mean_z24 = std::ldexp(e.mean_window, 24);
   return e;
 }
 

@@ -1,7 +1,9 @@
 // Depth error (design §4) over the pixels where the reference and the test hit the same
 // scene object: |z_ref − z_test| in window depth units ([0, 1]), in Z-buffer LSBs of a
-// `bits`-bit buffer (window depth × (2^bits − 1)), and in view units (distance along the
-// viewing axis, recovered from window depth through the camera's near/far).
+// `bits`-bit buffer (window depth × (2^bits − 1)), in units independent of any
+// configuration (window depth × 2^24, `z24`: what accuracy reports print, so that a narrow
+// Z-buffer never looks better for its coarser LSB), and in view units (distance along the
+// viewing axis, recovered from window depth through the camera's near/far: world units).
 #pragma once
 #include <cstddef>
 
@@ -15,6 +17,7 @@ struct DepthError {
   std::size_t pixels = 0;  // pixels where both hit the same object
   double max_window = 0, mean_window = 0;
   double max_lsb = 0, mean_lsb = 0;
+  double max_z24 = 0, mean_z24 = 0;  // window depth x 2^24
   double max_view = 0, mean_view = 0;
   int bits = 24;
 };

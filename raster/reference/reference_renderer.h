@@ -12,6 +12,10 @@
 
 namespace qacc {
 
+// Changes whenever the reference's output for a scene can change: part of the key of the
+// reference render cache (tools/engines/reference_cache.h).
+constexpr const char* kReferenceRendererVersion = "qacc-reference/1";
+
 struct ReferenceStats {
   double setup_ms = 0;      // window-space setup and binning
   double visibility_ms = 0; // per-pixel root finding and depth test

@@ -214,3 +214,25 @@ TEST(ReciprocalSqrt, NewtonStepFromTheSeedRomIsAccurateTo18Bits) {
   EXPECT_GT(worst, 0.0);  // an approximation, not an exact unit
   EXPECT_EQ(ReciprocalSqrt::compute(0).y, 0);
 }
+
+TEST(FixedPoint, QuantizeCountsPrecisionLoss) {
+  OverflowCounter c;
+  EXPECT_EQ(quantize(1e-12, 10, 32, OverflowMode::Saturate, c), 0);  // non-zero, quantised to zero
+  EXPECT_EQ(quantize(3.0, 4, 32, OverflowMode::Saturate, c), 48);    // 6 significant bits left
+  EXPECT_EQ(quantize(1000.0, 10, 32, OverflowMode::Saturate, c), 1024000);
+  EXPECT_EQ(quantize(0.0, 10, 32, OverflowMode::Saturate, c), 0);    // zero is not a loss
+  EXPECT_EQ(c.zeroed, 1u);
+  EXPECT_EQ(c.coarse, 1u);
+  EXPECT_EQ(c.events, 0u);
+}
+
+TEST(HwConfig, NamedAfterItsFileAndNarrowWidthsRefusedWithTheReason) {
+  EXPECT_EQ(parseHwConfig(R"({"value_bits": 16})", "dir/narrow16.json").name, "narrow16");
+  EXPECT_EQ(parseHwConfig(R"({"name": "mine", "value_bits": 16})", "dir/narrow16.json").name, "mine");
+  try {
+    parseHwConfig(R"({"value_bits": 32, "delta_bits": 40})", "c.json");
+    FAIL() << "delta_bits 40 with value_bits 32 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("c.json: /delta_bits: 40 is below 2 value_bits - 8"), std::string::npos) << e.what();
+  }
+}

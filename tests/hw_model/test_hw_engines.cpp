@@ -142,11 +142,11 @@ TEST(HwEngines, DefaultConfigAccuracyOnBenchmarkScenes) {
     scene.height /= 2;
     const FrameBuffer ref = renderReference(scene, 2);
     const HwRender hw = renderHw(scene, HwConfig(), 2);
-    const AccuracyReport a = accuracyReport(ref, hw.fb, scene.camera, 24);
+    const AccuracyReport a = accuracyReport(ref, hw.fb, scene.camera);
     EXPECT_LE(a.wrong_fraction, 1e-3) << name << ": " << a.line();
     EXPECT_EQ(a.pinholes, 0u) << name << ": " << a.line();
     EXPECT_GT(a.psnr_db, 40.0) << name;
-    EXPECT_LE(a.mean_depth_lsb, 2.0) << name;
+    EXPECT_LE(a.mean_depth_z24, 2.0) << name;
     EXPECT_EQ(hw.stats.overflow.total(), 0u) << name;
   }
 }

@@ -36,7 +36,7 @@ Scene makeScene(int w, int h, const Camera& cam, const std::vector<Primitive>& p
 AccuracyReport check(const Scene& scene, bool cycleToo, const std::string& what) {
   const FrameBuffer ref = renderReference(scene, 2);
   const HwRender hw = renderHw(scene, HwConfig(), 2);
-  const AccuracyReport a = accuracyReport(ref, hw.fb, scene.camera, 24);
+  const AccuracyReport a = accuracyReport(ref, hw.fb, scene.camera);
   EXPECT_GT(a.reference_covered, 0u) << what;
   EXPECT_LE(a.wrong_fraction, 1e-3) << what << ": " << a.line();
   EXPECT_LE(double(a.spurious), 1e-3 * double(a.reference_covered) + 2) << what << ": " << a.line();

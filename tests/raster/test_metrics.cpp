@@ -164,9 +164,35 @@ TEST(CoverageError, CountsEachKind) {
   EXPECT_EQ(e.wrong_object, 1u);
   EXPECT_EQ(e.pinholes, 1u);
   EXPECT_EQ(e.spurious, 1u);
-  EXPECT_NEAR(e.wrongFraction(), 2.0 / 3.0, 1e-15);
+  EXPECT_EQ(e.union_covered, 4u);
+  // Every class counts, over the union of covered pixels: 3 of 4.
+  EXPECT_NEAR(e.wrongFraction(), 3.0 / 4.0, 1e-15);
   const Image8 m = coverageErrorMask(r, t);
   EXPECT_EQ(m.data, (UninitVector<std::uint8_t>{0, 1, 2, 3}));
+}
+
+TEST(CoverageError, SpuriousPixelsCountInTheFraction) {
+  // The reference covers 2 pixels, the test those 2 and 6 more: 6 of 8 covered pixels are wrong.
+  FrameBuffer r(8, 1, {0, 0, 0}), t(8, 1, {0, 0, 0});
+  r.object = {0, 0, -1, -1, -1, -1, -1, -1};
+  t.object = {0, 0, 1, 1, 1, 1, 1, 1};
+  const CoverageError e = coverageError(r, t);
+  EXPECT_EQ(e.spurious, 6u);
+  EXPECT_NEAR(e.wrongFraction(), 6.0 / 8.0, 1e-15);
+}
+
+TEST(DepthError, Z24UnitsDoNotDependOnTheBufferWidth) {
+  Camera cam;
+  FrameBuffer r(1, 1, {0, 0, 0}), t(1, 1, {0, 0, 0});
+  r.object = {0};
+  t.object = {0};
+  r.depth = {0.5};
+  t.depth = {0.5 + 3.0 / 16777216.0};
+  for (int bits : {8, 16, 24}) {
+    const DepthError e = depthError(r, t, cam, bits);
+    EXPECT_NEAR(e.max_z24, 3.0, 1e-6) << bits;
+    EXPECT_NEAR(e.mean_z24, 3.0, 1e-6) << bits;
+  }
 }
 
 TEST(DepthError, WindowLsbAndView) {

@@ -11,7 +11,8 @@
 // silicon cost (cost_model.h) and the load average. Then the ratios the performance
 // targets are stated in (docs/PERFORMANCE.md): hw against the reference at each thread
 // count, and each engine from the first thread count to the last. --json FILE writes all
-// of it with the machine (CPU model, cores). Nothing is asserted.
+// of it with the machine (CPU model, cores); --out OUT writes the runs as OUT.json and
+// OUT.csv rows, as `reduce` and `sweep` do. Nothing is asserted.
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -27,6 +28,7 @@
 #include "hw_model/engines/cycle_engine.h"
 #include "hw_model/engines/functional_engine.h"
 #include "hw_model/report/cost_model.h"
+#include "hw_model/report/stats_file.h"
 #include "modeling/loader/scene_loader.h"
 #include "raster/reference/reference_renderer.h"
 #include "tools/cli/commands.h"
@@ -43,6 +45,7 @@ struct BenchArgs {
   std::vector<int> threads;
   int repeat = 3;
   bool cycle = true;
+  std::string out;   // OUT.json and OUT.csv, one row per scene and thread count
   std::string json;
 };
 
@@ -172,6 +175,19 @@ void runBench(const BenchArgs& a) {
     }
   const double load1 = loadAverage();
   std::printf("load average %.2f at the start, %.2f at the end\n", load0, load1);
+  if (!a.out.empty()) {
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (const BenchRun& b : runs) {
+      nlohmann::ordered_json row;
+      row["config"] = cfg.name;
+      row["width"] = a.width;
+      row["height"] = a.height;
+      row["gates_kge"] = CostModel::of(cfg).totalGe() / 1e3;
+      for (const auto& [k, v] : toJson(b).items()) row[k] = v;
+      rows.push_back(row);
+    }
+    writeResultRows(a.out, "qacc-bench/1", rows);
+  }
   if (a.json.empty()) return;
   nlohmann::json doc;
   doc["format"] = "qacc-bench/1";
@@ -204,6 +220,7 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--repeat", args->repeat, "Frames timed per engine (best is kept)")->capture_default_str()->check(CLI::Range(1, 100));
   cmd->add_flag("!--no-cycle", args->cycle, "Skip the hw-cycle run");
   cmd->add_option("--json", args->json, "Also write the results as JSON (with the machine)");
+  cmd->add_option("--out", args->out, "Write the table as OUT.json and OUT.csv");
   cmd->callback([args] { runBench(*args); });
 }
 

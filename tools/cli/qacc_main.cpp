@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   qacc::addCompareCommand(app);
   qacc::addReduceCommand(app);
   qacc::addBenchCommand(app);
+  qacc::addSweepCommand(app);
+  qacc::addAutosizeCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -16,6 +16,7 @@
 #include "modeling/algebraic/marching_tetrahedra.h"
 #include "modeling/loader/scene_loader.h"
 #include "raster/metrics/coverage_error.h"
+#include "hw_model/report/stats_file.h"
 #include "raster/metrics/psnr.h"
 #include "tools/cli/commands.h"
 #include "tools/engines/engine.h"
@@ -29,6 +30,7 @@ struct ReduceArgs {
   std::string levels = "2,4,8,16";
   std::string engine = "reference";
   int threads = 0;
+  std::string out;  // results: OUT.json and OUT.csv (one row per object and level)
 };
 
 std::vector<int> parseLevels(const std::string& s) {
@@ -36,11 +38,18 @@ std::vector<int> parseLevels(const std::string& s) {
   std::stringstream ss(s);
   std::string item;
   while (std::getline(ss, item, ',')) {
-    const int v = std::stoi(item);
-    if (v < 1 || v > 256) throw std::invalid_argument("levels must be in [1, 256]");
+    std::size_t pos = 0;
+    int v = 0;
+    try {
+      v = std::stoi(item, &pos);
+    } catch (...) {
+      pos = 0;
+    }
+    if (item.empty() || pos != item.size() || v < 1 || v > 256)
+      throw std::invalid_argument("--levels: '" + item + "' is not a level (an integer from 1 to 256)");
     out.push_back(v);
   }
-  if (out.empty()) throw std::invalid_argument("no levels given");
+  if (out.empty()) throw std::invalid_argument("--levels: no level given");
   return out;
 }
 
@@ -76,6 +85,11 @@ void runReduce(const ReduceArgs& a) {
   eo.report_accuracy = false;
   const FrameBuffer truth = runEngine("reference", truthScene, eo).fb;
   const auto& objects = doc.at("objects");
+  bool anyAlgebraic = false;
+  for (const auto& o : objects) anyAlgebraic |= o.is_object() && o.value("type", "") == "algebraic";
+  if (!anyAlgebraic)
+    throw std::invalid_argument(a.scene + ": /objects: no object of type \"algebraic\" (reduce studies degree reduction)");
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (std::size_t oi = 0; oi < objects.size(); ++oi) {
     if (objects[oi].value("type", "") != "algebraic") continue;
     const JsonNode node(objects[oi], "/objects/" + std::to_string(oi), std::make_shared<const std::string>(a.scene));
@@ -114,8 +128,26 @@ void runReduce(const ReduceArgs& a) {
                   r.distinct_quadrics, r.error.max(), 0.5 * (r.error.mean_piece_to_surface + r.error.mean_surface_to_piece),
                   diff, ce.pinholes, ce.spurious, closedPinholes(fb), psnr(truth, fb), tris, mtLevel);
       std::fflush(stdout);
+      nlohmann::ordered_json row;
+      row["object"] = oi;
+      row["level"] = L;
+      row["engine"] = a.engine;
+      row["cells"] = r.cells;
+      row["kept"] = r.kept_cells;
+      row["distinct_quadrics"] = r.distinct_quadrics;
+      row["geometric_error_max"] = r.error.max();
+      row["geometric_error_mean"] = 0.5 * (r.error.mean_piece_to_surface + r.error.mean_surface_to_piece);
+      row["coverage_diff"] = diff;
+      row["missing"] = ce.pinholes;
+      row["spurious"] = ce.spurious;
+      row["closed_pinholes"] = closedPinholes(fb);
+      row["psnr_db"] = jsonNumber(psnr(truth, fb));
+      row["mt_triangles"] = tris;
+      row["mt_level"] = mtLevel;
+      rows.push_back(row);
     }
   }
+  if (!a.out.empty()) writeResultRows(a.out, "qacc-reduce/1", rows);
 }
 
 }  // namespace
@@ -128,7 +160,8 @@ void addReduceCommand(CLI::App& app) {
   cmd->add_option("scene", args->scene, "Scene file")->required();
   cmd->add_option("--levels", args->levels, "Comma-separated Kuhn levels (cubes per axis)");
   cmd->add_option("--engine", args->engine, "Renderer of the pieces: reference|hw|hw-cycle");
-  cmd->add_option("--threads", args->threads, "Threads (default: all cores)");
+  cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+  cmd->add_option("--out", args->out, "Write the table as OUT.json and OUT.csv");
   cmd->callback([args] { runReduce(*args); });
 }
 

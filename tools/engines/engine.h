@@ -13,10 +13,10 @@ namespace qacc {
 struct EngineOptions {
   int threads = 0;          // <= 0: OpenMP default
   std::string config_path;  // accelerator configuration JSON (hw, hw-cycle)
-  std::string stats_path;   // statistics JSON (+ CSV alongside) (hw, hw-cycle)
+  std::string stats_path;   // statistics JSON (+ CSV alongside), every engine
   int level = 0;            // tessellation level (facets)
   std::string shading;      // facet shading mode (facets)
-  bool report_accuracy = true;  // hw engines: compare with the reference after rendering
+  bool report_accuracy = true;  // hw, hw-cycle, facets: compare with the reference after rendering
 };
 
 struct EngineResult {
@@ -26,7 +26,11 @@ struct EngineResult {
   std::string accuracy;           // hw engines: the accuracy line (also in notes), empty with --no-accuracy
 };
 
-// Throws std::invalid_argument for an unknown engine or one not built in.
+// Refuses an unknown engine and every option the engine does not read (--config outside
+// hw / hw-cycle, --level and --shading outside facets) with a message naming both.
+void checkEngineOptions(const std::string& engine, const EngineOptions& options);
+// Throws std::invalid_argument for an unknown engine or one not built in, or an option
+// the engine does not read. `stats_path` works for every engine.
 EngineResult runEngine(const std::string& engine, const Scene& scene, const EngineOptions& options);
 std::vector<std::string> engineNames();
 // Throws a SceneError naming the first `csg` object when `engine` cannot draw CSG (every

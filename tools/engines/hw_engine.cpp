@@ -36,13 +36,15 @@ bool runHwEngine(const std::string& engine, const Scene& scene, const EngineOpti
   HwStats stats;
   out.fb = renderWithHwEngine(engine, scene, cfg, options.threads, stats);
   out.host_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  if (!options.stats_path.empty()) stats.write(options.stats_path);
   for (const auto& l : stats.summaryLines()) out.notes.push_back(l);
   if (options.report_accuracy) {
     const FrameBuffer ref = renderReference(scene, options.threads);
-    out.accuracy = accuracyReport(ref, out.fb, scene.camera, cfg.zbuffer_bits).line();
+    stats.accuracy = accuracyReport(ref, out.fb, scene.camera);
+    stats.has_accuracy = true;
+    out.accuracy = stats.accuracy.line();
     out.notes.push_back(out.accuracy);
   }
+  if (!options.stats_path.empty()) stats.write(options.stats_path);
   return true;
 }
 

@@ -1,0 +1,257 @@
+// qacc sweep and qacc autosize: spec errors, grid and one-axis points, shard/merge
+// equivalence through GNU parallel, the reference cache, autosize against an exhaustive
+// sweep; and the command line's refusals of flags an engine does not read.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tools/engines/reference_cache.h"
+#include "tools/sweep/autosize.h"
+#include "tools/sweep/pareto_front.h"
+#include "tools/sweep/sweep_points.h"
+#include "tools/sweep/sweep_results.h"
+#include "tools/sweep/sweep_runner.h"
+
+using namespace qacc;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kSrc = QACC_SOURCE_DIR;
+
+fs::path tempDir(const std::string& name) {
+  const fs::path d = fs::path(QACC_BINARY_DIR) / "test_sweep" / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+std::string write(const fs::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+struct CmdRun {
+  int status = 0;
+  std::string out;
+};
+
+CmdRun run(const std::string& cmd) {
+  CmdRun r;
+  FILE* f = popen((cmd + " 2>&1").c_str(), "r");
+  char buf[4096];
+  while (f && fgets(buf, sizeof buf, f)) r.out += buf;
+  const int st = f ? pclose(f) : -1;
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+std::string qaccExe() { return QACC_EXE; }
+
+// A small sweep: 2 scenes, 3 points (one axis), 96x72.
+std::string tinySpec(const fs::path& dir) {
+  return write(dir / "tiny.json", R"({"format": "qacc-sweep/1", "name": "tiny", "engine": "hw-cycle",
+    "scenes": [")" + kSrc + R"(/scenes/gallery.json", ")" + kSrc + R"(/scenes/cylinders.json"],
+    "size": [96, 72], "mode": "one_axis", "target": "wrong<=0.5%",
+    "axes": [{"key": "value_bits", "values": [32, 20, 14]}, {"key": "delta_bits", "values": [48]}]})");
+}
+
+nlohmann::json results(const fs::path& dir) {
+  std::ifstream in(dir / "results.json");
+  return nlohmann::json::parse(in);
+}
+
+// Rows without the columns that depend on the host.
+nlohmann::json comparable(const nlohmann::json& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (auto row : rows) {
+    for (auto it = row.begin(); it != row.end();) {
+      if (isHostColumn(it.key())) it = row.erase(it);
+      else ++it;
+    }
+    out.push_back(row);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(SweepSpec, PointsOfAGridAndOfOneAxis) {
+  const fs::path d = tempDir("points");
+  const std::string scene = kSrc + "/scenes/gallery.json";
+  const std::string axes = R"("axes": [{"key": "value_bits", "values": [32, 24]}, {"key": "clip_bits", "range": [32, 16, -8]}])";
+  SweepSpec g = loadSweepSpec(write(d / "g.json", R"({"format": "qacc-sweep/1", "scenes": [")" + scene + R"("], )" + axes + "}"));
+  std::vector<SweepPoint> p = sweepPoints(g);
+  ASSERT_EQ(p.size(), 6u);  // 2 x 3, first axis slowest
+  EXPECT_EQ(p[0].label, "value_bits=32 clip_bits=32");
+  EXPECT_EQ(p[1].label, "value_bits=32 clip_bits=24");
+  EXPECT_EQ(p[3].label, "value_bits=24 clip_bits=32");
+  EXPECT_EQ(p[5].config.value_bits, 24);
+  EXPECT_EQ(p[5].config.clip_bits, 16);
+  SweepSpec o = loadSweepSpec(
+      write(d / "o.json", R"({"format": "qacc-sweep/1", "mode": "one_axis", "scenes": [")" + scene + R"("], )" + axes + "}"));
+  p = sweepPoints(o);
+  ASSERT_EQ(p.size(), 4u);  // base, value_bits=24, clip_bits=24, clip_bits=16 (32 is the base)
+  EXPECT_EQ(p[0].label, "base");
+  EXPECT_EQ(p[1].label, "value_bits=24");
+  EXPECT_EQ(p[1].config.clip_bits, 32);
+  EXPECT_EQ(p[3].label, "clip_bits=16");
+  // Shards: every item in exactly one.
+  for (std::size_t i = 0; i < 20; ++i) {
+    int n = 0;
+    for (int s = 1; s <= 3; ++s) n += Shard{s, 3}.takes(i);
+    EXPECT_EQ(n, 1);
+  }
+  EXPECT_THROW(parseShard("0/3"), std::invalid_argument);
+  EXPECT_THROW(parseShard("4/3"), std::invalid_argument);
+  EXPECT_THROW(parseShard("1-3"), std::invalid_argument);
+}
+
+TEST(SweepSpec, ErrorsNameTheJsonPath) {
+  const fs::path d = tempDir("errors");
+  const std::string head = R"({"format": "qacc-sweep/1", "scenes": [")" + kSrc + R"(/scenes/gallery.json"], )";
+  auto message = [&](const std::string& body) {
+    try {
+      loadSweepSpec(write(d / "bad.json", head + body + "}"));
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message(R"("axes": [{"key": "value_bits", "values": [32, 99]}])").find("/axes/0/values/1"), std::string::npos);
+  EXPECT_NE(message(R"("axes": [{"key": "valu_bits", "values": [32]}])").find("unknown accelerator configuration key"),
+            std::string::npos);
+  EXPECT_NE(message(R"("axes": [{"key": "scene.size", "values": [[96]]}])").find("/axes/0/values/0"), std::string::npos);
+  EXPECT_NE(message(R"("axes": [], "engine": "facets")").find("/engine"), std::string::npos);
+  EXPECT_NE(message(R"("axes": [], "colour": 1)").find("/colour"), std::string::npos);
+  EXPECT_NE(message(R"("axes": [{"key": "clip_bits", "range": [8, 16, -2]}])").find("/axes/0/range"), std::string::npos);
+}
+
+TEST(ParetoFront, KeepsTheUndominated) {
+  const std::vector<std::pair<double, double>> p = {{1, 5}, {2, 3}, {2, 4}, {3, 3}, {4, 1}, {5, 2}};
+  EXPECT_EQ(paretoFront(p), (std::vector<std::size_t>{0, 1, 4}));
+}
+
+TEST(Sweep, ShardsThroughGnuParallelMergeToTheUnshardedRun) {
+  ASSERT_EQ(run("parallel --version").status, 0) << "GNU parallel is missing (Debian package parallel, tools/deps.sh)";
+  const fs::path d = tempDir("shards");
+  const std::string spec = tinySpec(d);
+  const std::string cache = "--cache " + (d / "cache").string();
+  CmdRun whole = run(qaccExe() + " sweep " + spec + " --out " + (d / "whole").string() + " --no-report " + cache);
+  ASSERT_EQ(whole.status, 0) << whole.out;
+  CmdRun shards = run("parallel " + qaccExe() + " sweep " + spec + " --shard {}/3 --out " + (d / "part{}").string() +
+                   " --no-report " + cache + " ::: 1 2 3");
+  ASSERT_EQ(shards.status, 0) << shards.out;
+  CmdRun merge = run(qaccExe() + " sweep --merge " + (d / "part1").string() + " " + (d / "part2").string() + " " +
+                  (d / "part3").string() + " --out " + (d / "merged").string() + " --no-report");
+  ASSERT_EQ(merge.status, 0) << merge.out;
+  const nlohmann::json a = results(d / "whole"), b = results(d / "merged");
+  EXPECT_EQ(a["rows"].size(), 8u);  // 4 points (one refused) x 2 scenes
+  EXPECT_EQ(comparable(a["rows"]), comparable(b["rows"]));
+  EXPECT_EQ(a["fronts"], b["fronts"]);
+  // A missing shard is refused.
+  CmdRun partial = run(qaccExe() + " sweep --merge " + (d / "part1").string() + " " + (d / "part2").string() + " --out " +
+                    (d / "bad").string() + " --no-report");
+  EXPECT_EQ(partial.status, 1);
+  EXPECT_NE(partial.out.find("missing"), std::string::npos) << partial.out;
+}
+
+TEST(Sweep, SecondSweepRendersNoReference) {
+  const fs::path d = tempDir("cache");
+  const std::string spec = tinySpec(d);
+  const std::string cmd = qaccExe() + " sweep " + spec + " --no-report --cache " + (d / "cache").string() + " --out ";
+  CmdRun first = run(cmd + (d / "one").string());
+  ASSERT_EQ(first.status, 0) << first.out;
+  EXPECT_NE(first.out.find("2 renders"), std::string::npos) << first.out;  // one per scene
+  CmdRun second = run(cmd + (d / "two").string());
+  ASSERT_EQ(second.status, 0) << second.out;
+  EXPECT_NE(second.out.find("0 renders"), std::string::npos) << second.out;
+  const nlohmann::json two = results(d / "two"), one = results(d / "one");
+  for (const auto& row : two["rows"])
+    if (row["status"] == "ok") {
+      EXPECT_FALSE(row["reference_rendered"].get<bool>());
+    }
+  EXPECT_EQ(comparable(one["rows"]), comparable(two["rows"]));
+  // A refused configuration is a row with its reason.
+  bool refused = false;
+  for (const auto& row : one["rows"])
+    if (row["status"] == "refused") refused = row["note"].get<std::string>().find("delta_bits") != std::string::npos;
+  EXPECT_TRUE(refused);
+  // The key changes with the scene's content and size.
+  EXPECT_NE(ReferenceCache::key("{}", ".", 96, 72), ReferenceCache::key("{ }", ".", 96, 72));
+  EXPECT_NE(ReferenceCache::key("{}", ".", 96, 72), ReferenceCache::key("{}", ".", 96, 73));
+}
+
+TEST(Autosize, FindsTheExhaustiveOptimumOfASmallGrid) {
+  const fs::path d = tempDir("autosize");
+  const std::string scene = kSrc + "/scenes/gallery.json";
+  SweepSpec spec = loadSweepSpec(write(d / "grid.json", R"({"format": "qacc-sweep/1", "engine": "hw", "scenes": [")" +
+                                                           scene + R"("], "size": [96, 72], "thumbnail_width": 0,
+    "axes": [{"key": "value_bits", "values": [32, 24, 20, 16]}, {"key": "normal_bits", "values": [16, 14]},
+             {"key": "unit_frac_bits", "values": [14, 10, 6]}]})"));
+  ReferenceCache cache((d / "cache").string());
+  SweepEvaluator ev("hw", 0, cache);
+  const SweepResults all = runSweep(spec, Shard{}, ev);
+  const AccuracyTarget target = parseAccuracyTarget("wrong<=0.5%,psnr>=40");
+  double bestGe = 1e300;
+  std::string bestLabel;
+  for (const auto& row : all.rows)
+    if (target.meets(row) && row["gates_kge"].get<double>() < bestGe) {
+      bestGe = row["gates_kge"].get<double>();
+      bestLabel = row["label"].get<std::string>();
+    }
+  ASSERT_LT(bestGe, 1e300);
+  AutosizeOptions o;
+  o.scenes = {scene};
+  o.target = target;
+  o.keys = {"value_bits", "normal_bits", "unit_frac_bits"};
+  o.values = {{"value_bits", {32, 24, 20, 16}}, {"normal_bits", {16, 14}}, {"unit_frac_bits", {14, 10, 6}}};
+  o.knobs["scene.size"] = {96, 72};
+  const AutosizeResult r = autosize(o, ev);
+  ASSERT_TRUE(r.found);
+  EXPECT_NEAR(r.gates_kge, bestGe, 1e-9) << "exhaustive optimum: " << bestLabel;
+  EXPECT_LE(r.evaluations, all.rows.size());
+}
+
+TEST(CommandLine, FlagsAnEngineDoesNotReadAreRefused) {
+  const fs::path d = tempDir("flags");
+  const std::string scene = kSrc + "/scenes/cylinders.json --width 64 --height 48 -o " + (d / "x.png").string();
+  const std::string cfg = kSrc + "/hw_model/configs/minimal.json";
+  struct Case {
+    std::string args, message;
+  } cases[] = {{"--engine reference --config " + cfg, "--config is read by the accelerator engines"},
+               {"--engine reference --level 8", "--level is read by the facets engine only"},
+               {"--engine hw --level 8", "--level is read by the facets engine only"},
+               {"--engine hw-cycle --shading pixel", "--shading is read by the facets engine only"},
+               {"--engine facets --config " + cfg, "--config is read by the accelerator engines"}};
+  for (const Case& c : cases) {
+    const CmdRun r = run(qaccExe() + " render " + scene + " " + c.args);
+    EXPECT_EQ(r.status, 1) << c.args << ": " << r.out;
+    EXPECT_NE(r.out.find("qacc: error: " + c.message), std::string::npos) << c.args << ": " << r.out;
+  }
+  // --stats works for every engine; a configuration without a name is named after its file.
+  const CmdRun ref = run(qaccExe() + " render " + scene + " --stats " + (d / "ref.json").string());
+  ASSERT_EQ(ref.status, 0) << ref.out;
+  std::ifstream in(d / "ref.json");
+  EXPECT_EQ(nlohmann::json::parse(in)["engine"], "reference");
+  const std::string named = write(d / "narrow16.json", R"({"format": "qacc-hw-config/1", "value_bits": 16})");
+  const CmdRun hw = run(qaccExe() + " render " + scene + " --engine hw --config " + named + " --stats " + (d / "hw.json").string());
+  ASSERT_EQ(hw.status, 0) << hw.out;
+  EXPECT_NE(hw.out.find("hw [narrow16]"), std::string::npos) << hw.out;
+  std::ifstream hin(d / "hw.json");
+  const nlohmann::json st = nlohmann::json::parse(hin);
+  EXPECT_EQ(st["config"], "narrow16");
+  EXPECT_EQ(st["configuration"]["value_bits"], 16);
+  EXPECT_EQ(st["configuration"]["delta_bits"], 64);
+  EXPECT_TRUE(st["accuracy"].contains("wrong_percent"));
+  EXPECT_TRUE(st["accuracy"].contains("depth_max_z24"));
+}

@@ -1,0 +1,134 @@
+#include "tools/sweep/sweep_evaluator.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "hw_model/report/accuracy_report.h"
+#include "hw_model/report/stats_file.h"
+#include "modeling/loader/scene_loader.h"
+#include "modeling/tessellation/facet_scene.h"
+#include "modeling/tessellation/tessellation.h"
+#include "raster/image/png_io.h"
+#include "tools/engines/hw_engine.h"
+#include "tools/sweep/thumbnail.h"
+
+namespace qacc {
+
+namespace fs = std::filesystem;
+
+SweepEvaluator::SweepEvaluator(std::string engine, int threads, ReferenceCache& cache)
+    : engine_(std::move(engine)), threads_(threads), cache_(cache) {}
+
+void SweepEvaluator::setThumbnails(const std::string& outDir, int maxWidth) {
+  outDir_ = outDir;
+  thumbWidth_ = outDir.empty() ? 0 : maxWidth;
+}
+
+const SweepEvaluator::Source& SweepEvaluator::source(const std::string& path) {
+  auto it = sources_.find(path);
+  if (it != sources_.end()) return it->second;
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument(path + ": cannot open scene");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  Source s;
+  s.text = ss.str();
+  const fs::path p(path);
+  s.dir = p.has_parent_path() ? p.parent_path().string() : ".";
+  s.doc = nlohmann::json::parse(s.text, nullptr, false);
+  if (s.doc.is_discarded() || !s.doc.is_object() || !s.doc.contains("objects") || !s.doc["objects"].is_array())
+    loadScene(path);  // throws the loader's message
+  s.name = s.doc.value("name", p.stem().string());
+  return sources_.emplace(path, std::move(s)).first->second;
+}
+
+void SweepEvaluator::knobColumns(const nlohmann::ordered_json& knobs, nlohmann::ordered_json& row) {
+  for (const std::string& k : sceneKnobNames())
+    if (k != "scene.size") row[k] = knobs.contains(k) ? knobs[k] : nlohmann::ordered_json("");
+}
+
+namespace {
+
+// Sets `key` = value on every object of `type`; refuses a scene that has none.
+void patchObjects(nlohmann::json& doc, const std::string& type, const std::string& key, const nlohmann::json& value,
+                  const std::string& path, const std::string& knob, bool dropRefine) {
+  int n = 0;
+  for (auto& o : doc["objects"])
+    if (o.is_object() && o.value("type", "") == type) {
+      o[key] = value;
+      if (dropRefine) o.erase("refine_error");
+      ++n;
+    }
+  if (n == 0) throw std::invalid_argument(path + ": " + knob + " applies to " + type + " objects, and the scene has none");
+}
+
+}  // namespace
+
+nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohmann::ordered_json& knobs,
+                                                const std::string& scenePath, const std::string& thumbName) {
+  const Source& src = source(scenePath);
+  nlohmann::json doc = src.doc;
+  if (knobs.contains("scene.macropatch"))
+    patchObjects(doc, "macropatch", "model", knobs["scene.macropatch"], scenePath, "scene.macropatch", false);
+  // The truth does not depend on the degree-reduction level (the reference ray-casts the
+  // exact surface) nor on the tessellation: the reference is rendered from this text.
+  const std::string refText = doc.dump();
+  if (knobs.contains("scene.reduction_level"))
+    patchObjects(doc, "algebraic", "level", knobs["scene.reduction_level"], scenePath, "scene.reduction_level", true);
+  Scene scene = parseScene(doc.dump(), scenePath, src.dir);
+  if (knobs.contains("scene.size")) {
+    scene.width = knobs["scene.size"][0].get<int>();
+    scene.height = knobs["scene.size"][1].get<int>();
+  }
+  nlohmann::ordered_json row;
+  row["scene"] = src.name;
+  row["scene.width"] = scene.width;
+  row["scene.height"] = scene.height;
+  knobColumns(knobs, row);
+  if (knobs.contains("scene.tessellation_level") || knobs.contains("scene.tessellation_tolerance")) {
+    TessellationOptions to;
+    if (knobs.contains("scene.tessellation_level")) to.triangles = knobs["scene.tessellation_level"].get<int>();
+    if (knobs.contains("scene.tessellation_tolerance")) to.chord_error = knobs["scene.tessellation_tolerance"].get<double>();
+    scene = facetScene(scene, tessellateScene(scene, to));
+  }
+  row["primitives"] = scene.primitives.size();
+
+  const int w = scene.width, h = scene.height;
+  const std::size_t rendersBefore = cache_.renders();
+  const FrameBuffer ref = cache_.get(refText, src.dir, w, h, [&] { return parseScene(refText, scenePath, src.dir); },
+                                     threads_);
+  const auto t0 = std::chrono::steady_clock::now();
+  HwStats stats;
+  const FrameBuffer fb = renderWithHwEngine(engine_, scene, cfg, threads_, stats);
+  const double hostS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const AccuracyReport acc = accuracyReport(ref, fb, scene.camera);
+  row["status"] = "ok";
+  for (const auto& [k, v] : acc.fields()) row[k] = jsonNumber(v);
+  row["caps"] = stats.pixels.caps;
+  row["overflows"] = stats.overflow.total();
+  row["depth_clamps"] = stats.overflow.depth_clamps;
+  row["cycles"] = stats.cycles;
+  const double ft = stats.frameSeconds();
+  row["frame_ms"] = ft * 1e3;
+  row["fps"] = ft > 0 ? 1.0 / ft : 0.0;
+  row["gates_kge"] = stats.cost.totalGe() / 1e3;
+  row["host_seconds"] = hostS;
+  row["reference_rendered"] = cache_.renders() > rendersBefore;
+  if (thumbWidth_ > 0 && !thumbName.empty()) {
+    const fs::path dir = fs::path(outDir_) / "renders";
+    fs::create_directories(dir);
+    writePng((dir / (thumbName + ".png")).string(), thumbnail(fb.color, thumbWidth_));
+    writePng((dir / (thumbName + "_err.png")).string(), errorMapThumbnail(ref, fb, thumbWidth_));
+    const std::string refName = "reference_" + src.name + "_" + std::to_string(w) + "x" + std::to_string(h) + ".png";
+    if (!fs::exists(dir / refName)) writePng((dir / refName).string(), thumbnail(ref.color, thumbWidth_));
+    row["reference_thumbnail"] = "renders/" + refName;
+    row["thumbnail"] = "renders/" + thumbName + ".png";
+    row["error_map"] = "renders/" + thumbName + "_err.png";
+  }
+  return row;
+}
+
+}  // namespace qacc

@@ -1,0 +1,48 @@
+// SweepEvaluator: measures one accelerator configuration on one scene with its scene knobs
+// applied (the unit of work of `qacc sweep` and `qacc autosize`): the scene is patched
+// (scene.macropatch, scene.reduction_level), sized (scene.size), optionally tessellated
+// (scene.tessellation_level / _tolerance: its triangles go through the accelerator's
+// flat-facet path), rendered with `hw` or `hw-cycle`, and compared with the reference of
+// the same scene and size, which comes from the ReferenceCache (rendered once per scene,
+// size and content). The row holds the scene knobs, every accuracy figure
+// (accuracy_report.h), cycles, modeled frame time and fps, the cost model's gate count,
+// the host time, and the paths of the thumbnails when asked for.
+#pragma once
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "hw_model/config/hw_config.h"
+#include "tools/engines/reference_cache.h"
+#include "tools/sweep/sweep_spec.h"
+
+namespace qacc {
+
+class SweepEvaluator {
+ public:
+  SweepEvaluator(std::string engine, int threads, ReferenceCache& cache);
+  // Thumbnails of each render and its error map go to DIR/renders/NAME{,_err}.png
+  // (maxWidth pixels wide); 0 or an empty DIR: none.
+  void setThumbnails(const std::string& outDir, int maxWidth);
+  // Throws std::invalid_argument (with the scene file) when a knob does not apply to the scene.
+  nlohmann::ordered_json evaluate(const HwConfig& cfg, const nlohmann::ordered_json& knobs,
+                                  const std::string& scenePath, const std::string& thumbName = "");
+  // Scene knob columns with their values for a row ("" when not set).
+  static void knobColumns(const nlohmann::ordered_json& knobs, nlohmann::ordered_json& row);
+
+ private:
+  struct Source {
+    std::string dir, text, name;
+    nlohmann::json doc;
+  };
+  const Source& source(const std::string& path);
+  std::string engine_;
+  int threads_;
+  ReferenceCache& cache_;
+  std::string outDir_;
+  int thumbWidth_ = 0;
+  std::map<std::string, Source> sources_;
+};
+
+}  // namespace qacc
