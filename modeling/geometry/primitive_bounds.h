@@ -1,7 +1,7 @@
-// World-space axis-aligned bounds of a primitive: the surface's own extent when it is
-// bounded (an ellipsoid: tangent planes x = t satisfy πᵀ Q⁻¹ π = 0 for π = (1, 0, 0, −t)),
-// intersected with the extent of its clip polyhedron (vertices enumerated exactly).
-// `bounded` is false when neither limits the primitive in some direction.
+// World-space axis-aligned bounds of a primitive: the exact extent of its clipped piece —
+// (surface ∩ clip polyhedron), or ({f <= 0} ∩ clip polyhedron) for a solid — by the
+// Lagrange candidates of piece_extent.h, inside a box of ±kFar that stands for "unbounded".
+// A primitive is unbounded only when its clipped piece is (in some direction).
 #pragma once
 #include <Eigen/Geometry>
 
@@ -10,9 +10,9 @@
 namespace qacc {
 
 struct PrimitiveBounds {
-  Eigen::AlignedBox3d box;  // valid when bounded
-  bool bounded = false;
-  bool empty = false;       // the clip polyhedron is empty
+  Eigen::AlignedBox3d box;  // the piece's extent; valid in every direction when bounded
+  bool bounded = false;     // the piece is bounded in every direction
+  bool empty = false;       // the piece is empty (nothing to draw)
 };
 
 PrimitiveBounds primitiveBounds(const Primitive& prim);

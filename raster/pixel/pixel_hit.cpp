@@ -1,6 +1,6 @@
 #include "raster/pixel/pixel_hit.h"
 
-#include "raster/pixel/stable_roots.h"
+#include "modeling/geometry/stable_roots.h"
 
 namespace qacc {
 namespace {

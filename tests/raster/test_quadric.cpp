@@ -6,7 +6,7 @@
 #include "modeling/scene/camera.h"
 #include "modeling/geometry/natural_quadrics.h"
 #include "modeling/geometry/quadric_type.h"
-#include "raster/pixel/stable_roots.h"
+#include "modeling/geometry/stable_roots.h"
 
 using namespace qacc;
 

@@ -49,9 +49,12 @@ void printCsgInfo(const Scene& s) {
 
 void addInfoCommand(CLI::App& app) {
   auto path = std::make_shared<std::string>();
+  auto perPrimitive = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand("info", "Describe a scene: primitives, quadric types, clip planes, bounds");
   cmd->add_option("scene", *path, "Scene file")->required();
-  cmd->callback([path] {
+  cmd->add_flag("--primitives", *perPrimitive,
+                "Also list every primitive: object, quadric type, planes, solid, world bounds of its clipped piece");
+  cmd->callback([path, perPrimitive] {
     const Scene s = loadScene(*path);
     std::printf("scene %s (%s)\n", s.name.c_str(), path->c_str());
     std::printf("image %dx%d, %s camera, %zu lights, %zu materials\n", s.width, s.height,
@@ -66,15 +69,29 @@ void addInfoCommand(CLI::App& app) {
         std::printf("  object %zu (%s): %s\n", i, s.objects[i].type.c_str(), s.objects[i].note.c_str());
     std::map<std::string, int> qTypes;
     std::map<std::size_t, int> clipCounts;
-    int solid = 0, unbounded = 0;
+    int solid = 0, unbounded = 0, empty = 0;
     Eigen::AlignedBox3d bounds;
     bounds.setEmpty();
-    for (const auto& p : s.primitives) {
+    if (*perPrimitive) std::printf("primitive  object  type                          planes  solid  bounds\n");
+    for (std::size_t i = 0; i < s.primitives.size(); ++i) {
+      const Primitive& p = s.primitives[i];
       qTypes[quadricTypeName(quadricType(p.quadric))]++;
       clipCounts[p.clip.size()]++;
       solid += p.solid ? 1 : 0;
       const PrimitiveBounds b = primitiveBounds(p);
-      if (b.empty) continue;
+      if (*perPrimitive) {
+        std::printf("%9zu  %6d  %-28s  %6zu  %5s  ", i, p.object, quadricTypeName(quadricType(p.quadric)),
+                    p.clip.size(), p.solid ? "yes" : "no");
+        if (b.empty) std::printf("empty\n");
+        else if (!b.bounded) std::printf("unbounded\n");
+        else
+          std::printf("[%.4g, %.4g, %.4g] - [%.4g, %.4g, %.4g]\n", b.box.min().x(), b.box.min().y(), b.box.min().z(),
+                      b.box.max().x(), b.box.max().y(), b.box.max().z());
+      }
+      if (b.empty) {
+        ++empty;
+        continue;
+      }
       if (b.bounded) bounds.extend(b.box);
       else ++unbounded;
     }
@@ -88,7 +105,8 @@ void addInfoCommand(CLI::App& app) {
       std::printf("bounds: [%.4g, %.4g, %.4g] - [%.4g, %.4g, %.4g]%s\n", bounds.min().x(), bounds.min().y(),
                   bounds.min().z(), bounds.max().x(), bounds.max().y(), bounds.max().z(),
                   unbounded ? " (bounded primitives only)" : "");
-    if (unbounded) std::printf("unbounded primitives: %d\n", unbounded);
+    if (unbounded) std::printf("unbounded primitives: %d (their clipped piece is unbounded)\n", unbounded);
+    if (empty) std::printf("empty primitives: %d (their clipped piece is empty)\n", empty);
     if (!s.csg_trees.empty()) printCsgInfo(s);
   });
 }

@@ -1,0 +1,34 @@
+// The extent of a clipped quadric piece along coordinate axes: the exact extremes of x, y
+// (and z) over (surface ∩ polytope), or over ({f <= 0} ∩ polytope) for a solid. A linear
+// function is extreme on that set among finitely many points (Lagrange), each family a
+// line (two planes, since ∇f is affine) cut with the quadric, one stable quadratic each:
+//  (a) surface points where ∇f is parallel to the axis;
+//  (b) points of each face's conic where ∇f, the face normal and the axis are coplanar;
+//  (c) each edge of the polytope against the surface;
+//  the singular point of a cone and, for solids, the polytope vertices inside f <= 0.
+// Used by the window-space screen box of the renderers (raster/pixel/window_primitive.h,
+// axes x and y inside the view volume) and by the world-space bounds of a primitive
+// (primitive_bounds.h, all three axes).
+#pragma once
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+
+namespace qacc {
+
+// Extent of the candidates for the first `axes` coordinate axes (2: x and y; 3: x, y and
+// z) of the piece of quadric Q inside the polytope {X : p·(X, 1) <= 0 for p in P}; `ref` is
+// a point near the region (it anchors the candidate lines). Empty when the piece is empty.
+// The polytope must be bounded (add bounding planes): only then is the extent exact.
+Eigen::AlignedBox3d pieceExtent(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, bool solid,
+                                const Eigen::Vector3d& ref, int axes);
+
+// Vertices of the polytope P ∩ {plane = 0} (all vertices of P when plane is null), each
+// inside P within a relative tolerance of 1e-9.
+std::vector<Eigen::Vector3d> polytopeVertices(const std::vector<Eigen::Vector4d>& P, const Eigen::Vector4d* plane);
+
+// True when v lies in P within a relative tolerance of 1e-9.
+bool insidePolytope(const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& v);
+
+}  // namespace qacc
