@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "raster/pixel/stable_roots.h"
+#include "modeling/geometry/stable_roots.h"
 
 namespace qacc {
 
