@@ -30,7 +30,7 @@ TEST(CsgEngine, HwMatchesTheReferenceOnEveryCsgScene) {
     const Scene s = csgScene(name, 480, 360);
     const FrameBuffer ref = renderReference(s, 2);
     const HwRender hw = renderHw(s, cfg, 2);
-    const AccuracyReport a = accuracyReport(ref, hw.fb, s.camera, cfg.zbuffer_bits);
+    const AccuracyReport a = accuracyReport(ref, hw.fb, s.camera);
     EXPECT_GT(a.reference_covered, 10000u) << name;
     EXPECT_LE(a.wrong_fraction, 0.001) << name << ": " << a.line();
     EXPECT_EQ(a.pinholes, 0u) << name << ": " << a.line();

@@ -183,7 +183,8 @@ void runBench(const BenchArgs& a) {
       row["width"] = a.width;
       row["height"] = a.height;
       row["gates_kge"] = CostModel::of(cfg).totalGe() / 1e3;
-      for (const auto& [k, v] : toJson(b).items()) row[k] = v;
+      const nlohmann::json fields = toJson(b);
+      for (auto it = fields.begin(); it != fields.end(); ++it) row[it.key()] = *it;
       rows.push_back(row);
     }
     writeResultRows(a.out, "qacc-bench/1", rows);
