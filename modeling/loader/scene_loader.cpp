@@ -10,97 +10,13 @@
 #include "modeling/geometry/natural_quadrics.h"
 #include "modeling/loader/object_registry.h"
 #include "modeling/geometry/placed_exact_surface.h"
+#include "modeling/scene/strict_json.h"
+#include "modeling/support/bounded_file.h"
 
 namespace qacc {
 namespace {
 
 using nlohmann::json;
-
-// ---------------------------------------------------------------------------------------
-// JSON text → json, refusing syntax errors (with line and column) and duplicate keys
-// (nlohmann keeps the last one silently; a strict loader must not).
-
-struct Frame {
-  bool array = false;
-  std::size_t index = 0;       // arrays: elements completed so far
-  std::string key;             // objects: current key
-  std::vector<std::string> keys;
-};
-
-std::string framesPath(const std::vector<Frame>& frames, std::size_t upto) {
-  std::string p;
-  for (std::size_t i = 0; i < upto; ++i)
-    p += "/" + (frames[i].array ? std::to_string(frames[i].index) : jsonPointerKey(frames[i].key));
-  return p;
-}
-
-void lineColumn(const std::string& text, std::size_t byte, std::size_t& line, std::size_t& col) {
-  line = 1;
-  col = 1;
-  const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
-  for (std::size_t i = 0; i < end; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
-  }
-}
-
-json parseJson(const std::string& text, const std::string& file) {
-  std::vector<Frame> frames;
-  auto afterValue = [&frames]() {
-    if (!frames.empty() && frames.back().array) ++frames.back().index;
-  };
-  json::parser_callback_t cb = [&](int, json::parse_event_t ev, json& parsed) -> bool {
-    switch (ev) {
-      case json::parse_event_t::object_start: frames.push_back(Frame{}); break;
-      case json::parse_event_t::array_start: {
-        Frame f;
-        f.array = true;
-        frames.push_back(f);
-        break;
-      }
-      case json::parse_event_t::key: {
-        Frame& f = frames.back();
-        const std::string k = parsed.get<std::string>();
-        for (const auto& seen : f.keys)
-          if (seen == k)
-            throw SceneError(file, framesPath(frames, frames.size() - 1) + "/" + jsonPointerKey(k),
-                             "duplicate key '" + k + "'");
-        f.keys.push_back(k);
-        f.key = k;
-        break;
-      }
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        frames.pop_back();
-        afterValue();
-        break;
-      case json::parse_event_t::value: afterValue(); break;
-    }
-    return true;
-  };
-  try {
-    return json::parse(text, cb, /*allow_exceptions=*/true, /*ignore_comments=*/false);
-  } catch (const json::out_of_range& e) {
-    // Thrown by the lexer for numbers that overflow a double (e.g. 1e999); the value being
-    // read is the next one of the innermost open object or array.
-    std::string detail = e.what();
-    const auto pos = detail.find("] ");
-    if (pos != std::string::npos) detail = detail.substr(pos + 2);
-    throw SceneError(file, framesPath(frames, frames.size()), "number is not finite (" + detail + ")");
-  } catch (const json::parse_error& e) {
-    std::size_t line, col;
-    lineColumn(text, e.byte, line, col);
-    std::string detail = e.what();
-    const auto pos = detail.find("syntax error");
-    if (pos != std::string::npos) detail = detail.substr(pos);
-    throw SceneError(file, "/", "JSON syntax error at line " + std::to_string(line) + ", column " +
-                                    std::to_string(col) + ": " + detail);
-  }
-}
 
 // ---------------------------------------------------------------------------------------
 // Sections.
@@ -259,7 +175,7 @@ bool primitiveFinite(const Primitive& p) {
 }
 
 void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::map<std::string, int>& materials,
-                const std::string& directory) {
+                const std::string& directory, const Limits& limits) {
   if (!o.isObject()) o.fail("expected an object with a \"type\"");
   const JsonNode typeNode = o.at("type");
   const std::string type = typeNode.string();
@@ -288,7 +204,7 @@ void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::m
   if (auto c = o.get("clip")) clip = readClip(*c);
 
   const std::size_t exactBefore = scene.exact_surfaces.size();
-  ObjectContext ctx{scene, directory, material, solid, has_material, {}};
+  ObjectContext ctx{scene, directory, material, solid, has_material, {}, limits};
   std::vector<Primitive> prims;
   try {
     prims = (*builder)(o, ctx);
@@ -312,6 +228,9 @@ void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::m
     if (transform.given || !clip.empty())
       es = std::make_shared<PlacedExactSurface>(es, transform.given ? transform.M : Eigen::Matrix4d::Identity(), clip);
   }
+  if (scene.primitives.size() + prims.size() > limits.max_primitives)
+    o.fail(Limits::exceeded("the scene", scene.primitives.size() + prims.size(), "primitives", limits.max_primitives,
+                            "max-primitives"));
   for (Primitive& p : prims) {
     p.clip.insert(p.clip.end(), clip.begin(), clip.end());
     if (transform.given) p = p.transformed(transform.M);
@@ -337,8 +256,9 @@ std::string stem(const std::string& file) {
 
 }  // namespace
 
-Scene parseScene(const std::string& text, const std::string& file, const std::string& directory) {
-  const json doc = parseJson(text, file);
+Scene parseScene(const std::string& text, const std::string& file, const std::string& directory,
+                 const Limits& limits) {
+  const json doc = parseStrictJson(text, file);
   const JsonNode root(doc, "", std::make_shared<const std::string>(file));
   if (!root.isObject()) root.fail("a scene must be a JSON object");
 
@@ -362,21 +282,24 @@ Scene parseScene(const std::string& text, const std::string& file, const std::st
 
   const JsonNode objects = root.at("objects");
   const std::size_t n = objects.size();
-  for (std::size_t i = 0; i < n; ++i) readObject(objects[i], i, scene, materials, directory);
+  scene.objects.reserve(n);
+  scene.primitives.reserve(n);  // at least one each; large scenes are mostly simple objects
+  for (std::size_t i = 0; i < n; ++i) readObject(objects[i], i, scene, materials, directory, limits);
   root.finish();
   return scene;
 }
 
-Scene loadScene(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path, "/", std::string("cannot open scene file: ") + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw SceneError(path, "/", "cannot read scene file");
+Scene loadScene(const std::string& path, const Limits& limits) {
+  std::string text;
+  try {
+    text = readFileBounded(path, limits.max_input_bytes, "scene file");
+  } catch (const FileReadError& e) {
+    throw SceneError(path, "/", e.what());
+  }
   std::string directory = ".";
   const auto slash = path.find_last_of('/');
   if (slash != std::string::npos) directory = slash == 0 ? "/" : path.substr(0, slash);
-  return parseScene(ss.str(), path, directory);
+  return parseScene(text, path, directory, limits);
 }
 
 }  // namespace qacc

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "modeling/scene/scene.h"
+#include "modeling/support/limits.h"
 
 namespace qacc {
 
@@ -15,8 +16,10 @@ constexpr int kMaxImageSide = 16384;                          // width, height <
 constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;     // width * height <= 64 Mpixel
 
 // Reads and parses a scene file; relative paths inside it resolve against its directory.
-Scene loadScene(const std::string& path);
+// Input over `limits` is refused with the limit and the option that raises it.
+Scene loadScene(const std::string& path, const Limits& limits = Limits{});
 // Parses scene text; `file` names it in messages, `directory` resolves relative paths.
-Scene parseScene(const std::string& text, const std::string& file, const std::string& directory);
+Scene parseScene(const std::string& text, const std::string& file, const std::string& directory,
+                 const Limits& limits = Limits{});
 
 }  // namespace qacc

@@ -1,11 +1,14 @@
 // qacc batch SCENE... --out DIR [--engine E] [--threads N] [--width W --height H]
-// Renders every scene into DIR/<scene file name>.png and prints a table.
+// Renders every scene into DIR/<scene file name>.png and prints a table. A scene that cannot
+// be rendered prints "qacc: error: ..." and the batch goes on with the next one; the command
+// then fails (exit 1) naming how many scenes failed.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
 
 #include "tools/cli/commands.h"
+#include "tools/cli/limit_options.h"
 #include "tools/engines/render_job.h"
 
 namespace qacc {
@@ -16,6 +19,7 @@ struct BatchArgs {
   std::string out = "out";
   std::string engine = "reference";
   int threads = 0, width = 0, height = 0;
+  Limits limits;
 };
 }  // namespace
 
@@ -28,10 +32,12 @@ void addBatchCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--width", args->width, "Image width override")->check(CLI::Range(1, kMaxImageSide));
   cmd->add_option("--height", args->height, "Image height override")->check(CLI::Range(1, kMaxImageSide));
+  addLimitOptions(cmd, args->limits);
   cmd->callback([args] {
     std::filesystem::create_directories(args->out);
     std::printf("%-16s %10s %11s %14s %12s\n", "scene", "primitives", "size", "pixels covered", "ms");
     double total = 0;
+    std::size_t failed = 0;
     for (const auto& path : args->scenes) {
       RenderJob job;
       job.scene_path = path;
@@ -39,16 +45,28 @@ void addBatchCommand(CLI::App& app) {
       job.width = args->width;
       job.height = args->height;
       job.options.threads = args->threads;
+      job.options.limits = args->limits;
       job.color_path = (std::filesystem::path(args->out) / std::filesystem::path(path).stem()).string() + ".png";
-      const RenderJobResult r = runRenderJob(job);
+      RenderJobResult r;
+      try {
+        r = runRenderJob(job);
+      } catch (const std::exception& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "qacc: error: %s\n", e.what());
+        ++failed;
+        continue;
+      }
       const std::string size = std::to_string(r.scene.width) + "x" + std::to_string(r.scene.height);
       std::printf("%-16s %10zu %11s %14zu %12.1f\n", r.scene.name.c_str(), r.scene.primitives.size(), size.c_str(),
                   r.result.fb.covered(), r.result.host_ms);
       std::fflush(stdout);
       total += r.result.host_ms;
     }
-    std::printf("%zu scenes rendered with engine %s into %s/ in %.1f ms\n", args->scenes.size(),
+    std::printf("%zu scenes rendered with engine %s into %s/ in %.1f ms\n", args->scenes.size() - failed,
                 args->engine.c_str(), args->out.c_str(), total);
+    if (failed > 0)
+      throw std::runtime_error(std::to_string(failed) + " of " + std::to_string(args->scenes.size()) +
+                               " scenes could not be rendered (see the errors above)");
   });
 }
 

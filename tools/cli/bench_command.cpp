@@ -18,6 +18,7 @@
 #include "modeling/loader/scene_loader.h"
 #include "raster/reference/reference_renderer.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/limit_options.h"
 
 namespace qacc {
 
@@ -30,6 +31,7 @@ struct BenchArgs {
   int threads = 0;
   int repeat = 3;
   bool cycle = true;
+  Limits limits;
 };
 
 double wallMs(std::chrono::steady_clock::time_point t0) {
@@ -47,7 +49,7 @@ void runBench(const BenchArgs& a) {
   std::printf("%-14s %8s %10s %10s %7s %12s %9s %9s %12s %9s %10s %8s\n", "scene", "prims", "ref ms", "hw ms",
               "hw/ref", "cycles", "host s", "trace s", "loop cyc/s", "slowdown", "frame ms", "fps");
   for (const std::string& path : scenes) {
-    Scene scene = loadScene(path);
+    Scene scene = loadScene(path, a.limits);
     scene.width = a.width;
     scene.height = a.height;
     double refMs = 1e300, hwMs = 1e300;
@@ -91,6 +93,7 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--repeat", args->repeat, "Frames timed per engine (best is kept)")->capture_default_str()->check(CLI::Range(1, 100));
   cmd->add_flag("!--no-cycle", args->cycle, "Skip the hw-cycle run");
+  addLimitOptions(cmd, args->limits);
   cmd->callback([args] { runBench(*args); });
 }
 

@@ -45,6 +45,7 @@
 #include "raster/metrics/silhouette_distance.h"
 #include "raster/metrics/ssim.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/limit_options.h"
 #include "tools/engines/facet_engine.h"
 #include "tools/engines/hw_engine.h"
 #include "tools/report/svg_plot.h"
@@ -66,6 +67,7 @@ struct CompareOptions {
   int width = 0, height = 0;
   bool no_facet_cycles = false;
   std::size_t max_cycle_triangles = 1000000;  // facet-path cycle runs above this are skipped
+  Limits limits;
 };
 
 struct Metrics {
@@ -217,7 +219,7 @@ void writeText(const std::string& path, const std::string& text) {
 
 void runCompare(const CompareOptions& o) {
   namespace fs = std::filesystem;
-  Scene scene = loadScene(o.scene_path);
+  Scene scene = loadScene(o.scene_path, o.limits);
   if ((o.width > 0) != (o.height > 0)) throw std::invalid_argument("--width and --height go together");
   if (o.width > 0) {
     scene.width = o.width;
@@ -263,7 +265,7 @@ void runCompare(const CompareOptions& o) {
     r.level = level;
     TriangleMesh3 mesh;
     t0 = Clock::now();
-    FacetRun run = renderFacetScene(scene, level, shading, o.threads, &mesh);
+    FacetRun run = renderFacetScene(scene, level, shading, o.threads, o.limits.max_triangles, &mesh);
     r.host_ms = msSince(t0);
     r.draw_ms = run.render.draw_ms;
     r.gl_ms = run.render.totalMs();
@@ -551,6 +553,7 @@ void addCompareCommand(CLI::App& app) {
   cmd->add_option("--width", o->width, "Image width (with --height)")->check(CLI::Range(1, kMaxImageSide));
   cmd->add_option("--height", o->height, "Image height (with --width)")->check(CLI::Range(1, kMaxImageSide));
   cmd->add_flag("--no-facet-cycles", o->no_facet_cycles, "Skip the facet-path cycle runs on the accelerator");
+  addLimitOptions(cmd, o->limits);
   cmd->callback([o] { runCompare(*o); });
 }
 

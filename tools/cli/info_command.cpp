@@ -7,15 +7,18 @@
 #include "modeling/geometry/quadric_type.h"
 #include "modeling/loader/scene_loader.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/limit_options.h"
 
 namespace qacc {
 
 void addInfoCommand(CLI::App& app) {
   auto path = std::make_shared<std::string>();
+  auto limits = std::make_shared<Limits>();
   CLI::App* cmd = app.add_subcommand("info", "Describe a scene: primitives, quadric types, clip planes, bounds");
   cmd->add_option("scene", *path, "Scene file")->required();
-  cmd->callback([path] {
-    const Scene s = loadScene(*path);
+  addLimitOptions(cmd, *limits);
+  cmd->callback([path, limits] {
+    const Scene s = loadScene(*path, *limits);
     std::printf("scene %s (%s)\n", s.name.c_str(), path->c_str());
     std::printf("image %dx%d, %s camera, %zu lights, %zu materials\n", s.width, s.height,
                 s.camera.type == Camera::Type::Perspective ? "perspective" : "orthographic", s.lights.size(),

@@ -10,7 +10,7 @@ namespace qacc {
 
 RenderJobResult runRenderJob(const RenderJob& job) {
   RenderJobResult out;
-  out.scene = loadScene(job.scene_path);
+  out.scene = loadScene(job.scene_path, job.options.limits);
   if ((job.width > 0) != (job.height > 0))
     throw std::invalid_argument("--width and --height go together");
   if (job.width > 0) {
