@@ -10,23 +10,6 @@
 
 namespace qacc {
 
-int HwConfig::sqrtLatency() const {
-  const int bitsPerStep = sqrt_radix == 4 ? 2 : 1;
-  const int resultBits = (delta_bits + 1) / 2;
-  return (resultBits + bitsPerStep - 1) / bitsPerStep + 1;
-}
-
-int HwConfig::dividerLatency() const {
-  const int bitsPerStep = divider_radix == 4 ? 2 : 1;
-  return (depth_bits + bitsPerStep - 1) / bitsPerStep + 1;
-}
-
-int HwConfig::pixelPipelineLatency() const {
-  // interpolators (1) + sqrt + depth (divider, or one multiplier stage) + clip (1) + caps (1)
-  const int depth = depth_variant == DepthVariant::Stable ? dividerLatency() : 2;
-  return 1 + sqrtLatency() + depth + 1 + 1;
-}
-
 namespace {
 
 struct Field {

@@ -1,5 +1,6 @@
 // HwConfig: every parameter of the emulated accelerator (docs/HW_MODEL.md gives each
-// default and the argument for it). Loaded from one JSON file (`--config`); a key that is
+// default and the argument for it), flat as in the JSON file; each timed unit derives its
+// own parameter section from it (`Params::from`, timing/), with its latency formula. Loaded from one JSON file (`--config`); a key that is
 // absent keeps its default, an unknown key or a value out of range is refused.
 #pragma once
 #include <string>
@@ -9,7 +10,7 @@
 namespace qacc {
 
 enum class DepthVariant { Stable, Reciprocal };
-// How the shading unit normalises vectors: seed ROM + one Newton step (rsqrt_unit.h), or
+// How the shading unit normalises vectors: seed ROM + one Newton step (datapath/reciprocal_sqrt.h), or
 // a digit-recurrence square root followed by a divider.
 enum class Normalizer { Newton, Recurrence };
 
@@ -54,11 +55,6 @@ struct HwConfig {
   int zbuffer_banks = 4;
   int zbuffer_read_latency = 2;  // cycles from request to data
   int zbuffer_bank_busy = 2;     // cycles a bank is occupied by one read-modify-write
-
-  // Derived latencies of the pipelined units.
-  int sqrtLatency() const;     // cycles: one per digit step of the recurrence + 1
-  int dividerLatency() const;
-  int pixelPipelineLatency() const;  // interpolators + sqrt + depth + clip + caps
 };
 
 HwConfig loadHwConfig(const std::string& path);

@@ -1,4 +1,4 @@
-// CapUnit: solid display (digest §1, "surface vs volume"): where the line of a pixel
+// CapSelect: solid display (digest §1, "surface vs volume"): where the line of a pixel
 // enters the solid {f <= 0} ∩ clip polyhedron through one of the primitive's own clip
 // planes, the visible point is a cap on that plane. Depth-interval logic on the plane
 // depths zk(u, v) (linear interpolators): entry lo = the largest lower bound (planes
@@ -9,7 +9,6 @@
 #pragma once
 #include "hw_model/datapath/clip_test.h"
 #include "hw_model/config/hw_config.h"
-#include "hw_model/report/hw_stats.h"
 
 namespace qacc {
 
@@ -20,8 +19,7 @@ struct CapDecision {
   i128 z = 0;
 };
 
-class CapUnit {
- public:
+struct CapSelect {
   // zk: the planes' depths (depth format), hRaw: their h values; a, b, c at the block scale.
   static CapDecision decide(const PrimitiveSetup& s, const HwConfig& cfg, const i128* zk, const i128* hRaw, i128 b,
                             i128 c) {
@@ -38,7 +36,7 @@ class CapUnit {
         }
       } else if (p.zdir > 0) {
         if (zk[i] < hi) hi = zk[i];
-      } else if (!ClipUnit::keeps(p, hRaw[i], 0, Fz)) {
+      } else if (!ClipTest::keeps(p, hRaw[i], 0, Fz)) {
         d.empty = true;
         return d;
       }
@@ -50,7 +48,7 @@ class CapUnit {
     if (loPlane >= 0) {
       // f(lo) · 2^(e + 2 Fz) = a lo² + 2 b lo 2^Fz + c 2^(2 Fz)
       const i128 f = s.a * lo * lo + shl(2 * b * lo, Fz) + shl(c, 2 * Fz);
-      if (f <= 0 && ClipUnit::keptByAll(s.planes, hRaw, lo, Fz, loPlane)) {
+      if (f <= 0 && ClipTest::keptByAll(s.planes, hRaw, lo, Fz, loPlane)) {
         d.cap = true;
         d.plane = loPlane;
         d.z = lo;

@@ -1,4 +1,4 @@
-// ClipUnit: K linear evaluators test a depth against the primitive's clip planes
+// ClipTest: the clip unit's K linear evaluators test a depth against the primitive's clip planes
 // (design §3.2): the plane value at (u, v, z) is h(u, v) · 2^Fz + pz · z, exact in
 // integers, kept when negative, or zero on a plane that owns its boundary
 // (half_space.h) — a plane and its opposite get exactly opposite coefficients
@@ -11,8 +11,7 @@
 
 namespace qacc {
 
-class ClipUnit {
- public:
+struct ClipTest {
   static bool keeps(const PlaneSetup& p, i128 hRaw, i128 z, int Fz) {
     const i128 v = shl(hRaw, Fz) + p.pz * z;
     return v < 0 || (v == 0 && p.owns);

@@ -4,8 +4,7 @@
 
 namespace qacc {
 
-DepthRoots DepthUnit::roots(const PrimitiveSetup& s, const HwConfig& cfg, i128 b, i128 c, i128 sq,
-                            OverflowCounters& ovf) {
+DepthRoots depthRoots(const PrimitiveSetup& s, const HwConfig& cfg, i128 b, i128 c, i128 sq, OverflowCounters& ovf) {
   DepthRoots r;
   const int Fz = cfg.depth_frac_bits;
   if (cfg.depth_variant == DepthVariant::Stable) {

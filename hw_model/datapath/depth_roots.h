@@ -1,5 +1,5 @@
-// DepthUnit: the depths of the quadric on the line of a pixel, from a (constant), the
-// interpolated b and c, and s = sqrt(Δ) from the SqrtUnit, all at the primitive's block
+// Depth roots: the depths of the quadric on the line of a pixel, from a (constant), the
+// interpolated b and c, and s = sqrt(Δ) from the square-root extractor, all at the primitive's block
 // scale 2^e; depths come out in the internal depth format (depth_frac_bits fraction bits,
 // depth_bits wide; values beyond its range are clamped and counted — they lie outside
 // the view volume 0 <= z <= 1 anyway). Two variants (HwConfig::depth_variant):
@@ -12,7 +12,7 @@
 #include <cstdint>
 
 #include "hw_model/config/hw_config.h"
-#include "hw_model/report/hw_stats.h"
+#include "hw_model/datapath/overflow_counters.h"
 #include "hw_model/datapath/primitive_setup.h"
 
 namespace qacc {
@@ -22,32 +22,21 @@ struct DepthRoots {
   i128 z[2] = {0, 0};  // ascending
 };
 
-class DepthUnit {
- public:
-  static DepthRoots roots(const PrimitiveSetup& s, const HwConfig& cfg, i128 b, i128 c, i128 sq,
-                          OverflowCounters& ovf);
-  // Narrows a depth to the depth datapath (clamped, counted as a depth clamp).
-  static i128 clampDepth(i128 z, const HwConfig& cfg, OverflowCounters& ovf) {
-    const i128 hi = (i128(1) << (cfg.depth_bits - 1)) - 1, lo = -hi - 1;
-    if (z > hi) {
-      ++ovf.depth_clamps;
-      return hi;
-    }
-    if (z < lo) {
-      ++ovf.depth_clamps;
-      return lo;
-    }
-    return z;
+// The roots of the primitive on the line of a pixel (ascending), in the depth format.
+DepthRoots depthRoots(const PrimitiveSetup& s, const HwConfig& cfg, i128 b, i128 c, i128 sq, OverflowCounters& ovf);
+
+// Narrows a depth to the depth datapath (clamped, counted as a depth clamp).
+inline i128 clampDepth(i128 z, const HwConfig& cfg, OverflowCounters& ovf) {
+  const i128 hi = (i128(1) << (cfg.depth_bits - 1)) - 1, lo = -hi - 1;
+  if (z > hi) {
+    ++ovf.depth_clamps;
+    return hi;
   }
-  // The value stored in the Z-buffer: the top zbuffer_bits of the depth fraction.
-  static std::uint32_t zbufferValue(i128 z, const HwConfig& cfg) {
-    const i128 v = z >> (cfg.depth_frac_bits - cfg.zbuffer_bits);
-    const i128 top = (i128(1) << cfg.zbuffer_bits) - 1;
-    return std::uint32_t(v < 0 ? 0 : (v > top ? top : v));
+  if (z < lo) {
+    ++ovf.depth_clamps;
+    return lo;
   }
-  static int latency(const HwConfig& cfg) {
-    return cfg.depth_variant == DepthVariant::Stable ? cfg.dividerLatency() : 2;
-  }
-};
+  return z;
+}
 
 }  // namespace qacc

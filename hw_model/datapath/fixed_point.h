@@ -34,7 +34,7 @@ struct FixedFormat {
   i128 minRaw() const { return -(i128(1) << (width - 1)); }
 };
 
-// Overflow events, one counter per datapath (see OverflowCounters in hw_stats.h).
+// Overflow events, one counter per datapath (grouped in overflow_counters.h).
 struct OverflowCounter {
   std::uint64_t events = 0;
 };

@@ -7,7 +7,7 @@
 
 namespace qacc {
 
-PixelPipeline::PixelPipeline(const PrimitiveSetup& s, const HwConfig& cfg)
+PixelDatapath::PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg)
     : s_(s), cfg_(cfg), delta_(s.delta, cfg.interp_frac_bits, cfg.interp_acc_bits),
       c_(s.c, cfg.interp_frac_bits, cfg.interp_acc_bits), b_(s.b), facetZ_(s.facetZ) {
   for (const PlaneSetup& p : s.planes) {
@@ -18,7 +18,7 @@ PixelPipeline::PixelPipeline(const PrimitiveSetup& s, const HwConfig& cfg)
   zkv_.resize(s.planes.size());
 }
 
-void PixelPipeline::startSpan(int u, int v) {
+void PixelDatapath::startSpan(int u, int v) {
   if (s_.facet) {
     facetZ_.start(u, v);
   } else {
@@ -32,7 +32,7 @@ void PixelPipeline::startSpan(int u, int v) {
   }
 }
 
-void PixelPipeline::stepRight() {
+void PixelDatapath::stepRight() {
   if (s_.facet) {
     facetZ_.stepRight();
   } else {
@@ -46,19 +46,19 @@ void PixelPipeline::stepRight() {
   }
 }
 
-PixelOutcome PixelPipeline::evaluate(OverflowCounters& ovf) {
+PixelOutcome PixelDatapath::evaluate(OverflowCounters& ovf) {
   PixelOutcome o;
   const int Fz = cfg_.depth_frac_bits, Fi = cfg_.interp_frac_bits;
   const i128 one = i128(1) << Fz;
   const int np = int(h_.size());
-  o.clipPasses = ClipUnit::passes(np, cfg_.clip_evaluators);
+  o.clipPasses = ClipTest::passes(np, cfg_.clip_evaluators);
   const int hw = cfg_.clip_bits + Fi + 2;
   for (int i = 0; i < np; ++i) hv_[std::size_t(i)] = fitWidth(h_[std::size_t(i)].raw(), hw, cfg_.overflow, ovf.clip);
 
   if (s_.facet) {
-    const i128 z = DepthUnit::clampDepth(facetZ_.raw() >> Fi, cfg_, ovf);
+    const i128 z = clampDepth(facetZ_.raw() >> Fi, cfg_, ovf);
     o.candidate = true;
-    if (z >= 0 && z <= one && ClipUnit::keptByAll(s_.planes, hv_.data(), z, Fz)) {
+    if (z >= 0 && z <= one && ClipTest::keptByAll(s_.planes, hv_.data(), z, Fz)) {
       o.hit = true;
       o.z = z;
     }
@@ -71,10 +71,10 @@ PixelOutcome PixelPipeline::evaluate(OverflowCounters& ovf) {
   if (s_.solid) {
     for (int i = 0; i < np; ++i)
       zkv_[std::size_t(i)] = s_.planes[std::size_t(i)].zdir != 0
-                                 ? DepthUnit::clampDepth(zk_[std::size_t(i)].raw() >> Fi, cfg_, ovf)
+                                 ? clampDepth(zk_[std::size_t(i)].raw() >> Fi, cfg_, ovf)
                                  : 0;
     o.clipPasses += 1;
-    const CapDecision d = CapUnit::decide(s_, cfg_, zkv_.data(), hv_.data(), b, c);
+    const CapDecision d = CapSelect::decide(s_, cfg_, zkv_.data(), hv_.data(), b, c);
     if (d.empty) {
       o.candidate = d.plane >= 0;
       return o;
@@ -91,12 +91,12 @@ PixelOutcome PixelPipeline::evaluate(OverflowCounters& ovf) {
   if (delta < 0) return o;
   o.candidate = true;
   const i128 din = fitWidth(delta, cfg_.delta_bits + 1, cfg_.overflow, ovf.sqrt);
-  const i128 sd = i128(SqrtUnit::compute((unsigned __int128)din));
+  const i128 sd = i128(SqrtExtractor::compute((unsigned __int128)din));
   const i128 sq = fitWidth(shiftRound(sd, s_.ed - s_.e, cfg_.rounding), vw, cfg_.overflow, ovf.sqrt);
-  const DepthRoots r = DepthUnit::roots(s_, cfg_, b, c, sq, ovf);
+  const DepthRoots r = depthRoots(s_, cfg_, b, c, sq, ovf);
   for (int k = 0; k < r.count; ++k) {
     const i128 z = r.z[k];
-    if (z >= 0 && z <= one && ClipUnit::keptByAll(s_.planes, hv_.data(), z, Fz)) {
+    if (z >= 0 && z <= one && ClipTest::keptByAll(s_.planes, hv_.data(), z, Fz)) {
       o.hit = true;
       o.z = z;
       return o;

@@ -1,16 +1,17 @@
-// PixelPipeline: the arithmetic of one pixel pipeline (design §3.2 step 4) for one
+// PixelDatapath: the arithmetic of one pixel pipeline (design §3.2 step 4) for one
 // primitive — interpolators (Δ, b, c quadratic/linear; clip planes h; plane depths zk;
 // facet depth), square-root extractor, depth unit, clip unit and caps — producing the
 // visible point of the primitive on the line of a pixel, in fixed point.
 // startSpan() loads the interpolators directly at a pixel; along the span they advance
 // by forward differences (stepRight; the same values, bit for bit). Both engines call
-// exactly this code (hw per tile, hw-cycle in its pixel datapath pass, pixel_trace.h);
-// the cycle engine only adds timing around it.
+// exactly this code (hw per tile, hw-cycle in its pixel datapath pass,
+// engines/pixel_trace.h); the pixel pipeline unit (timing/pixel_pipeline_unit.h) only adds
+// time around it.
 #pragma once
 #include <vector>
 
 #include "hw_model/config/hw_config.h"
-#include "hw_model/report/hw_stats.h"
+#include "hw_model/datapath/overflow_counters.h"
 #include "hw_model/datapath/linear_interpolator.h"
 #include "hw_model/datapath/primitive_setup.h"
 #include "hw_model/datapath/quadratic_interpolator.h"
@@ -25,14 +26,12 @@ struct PixelOutcome {
   int clipPasses = 0;      // passes through the clip unit
 };
 
-class PixelPipeline {
+class PixelDatapath {
  public:
-  PixelPipeline(const PrimitiveSetup& s, const HwConfig& cfg);
+  PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg);
   void startSpan(int u, int v);
   void stepRight();
   PixelOutcome evaluate(OverflowCounters& ovf);  // at the current position
-  // Pipeline latency in cycles (interpolators + sqrt + depth + clip + caps).
-  static int latency(const HwConfig& cfg) { return cfg.pixelPipelineLatency(); }
 
  private:
   const PrimitiveSetup& s_;

@@ -1,6 +1,6 @@
 // PrimitiveSetup: everything the setup unit hands to traversal and the pixel pipelines for
 // one primitive — the quantised constants and interpolator seeds, in the configured
-// formats (design §3.2 step 2). Produced by SetupUnit::run, consumed identically by the
+// formats (design §3.2 step 2). Produced by setupPrimitive (setup_arithmetic.h), consumed identically by the
 // functional (`hw`) and the cycle-level (`hw-cycle`) engines.
 //
 // Scales (Fi = interp_frac_bits, Fz = depth_frac_bits):

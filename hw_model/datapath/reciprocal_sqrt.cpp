@@ -7,7 +7,7 @@ namespace qacc {
 
 namespace {
 
-constexpr int P = RsqrtUnit::kPrecision, S = RsqrtUnit::kSeedBits;
+constexpr int P = ReciprocalSqrt::kPrecision, S = ReciprocalSqrt::kSeedBits;
 
 // The seed ROM: entry i - 2^(S-2) covers m in [i, i+1) · 2^(2P+2-S), i in [2^(S-2), 2^S).
 const std::array<std::int64_t, (1 << S)>& seedRom() {
@@ -30,7 +30,7 @@ int bitLength128(unsigned __int128 v) {
 
 }  // namespace
 
-RsqrtUnit::Result RsqrtUnit::compute(unsigned __int128 L) {
+ReciprocalSqrt::Result ReciprocalSqrt::compute(unsigned __int128 L) {
   Result r;
   if (L == 0) return r;
   // Even shift s = 2k bringing the bit length of m to 2P+1 or 2P+2.

@@ -1,7 +1,7 @@
-// RsqrtUnit: reciprocal square root for the shading unit's normalisers, the way 1990s
+// ReciprocalSqrt: reciprocal square root for the shading unit's normalisers, the way 1990s
 // shading hardware did it — a seed ROM and one Newton-Raphson step — instead of a
 // digit-recurrence square root followed by a divider (HwConfig::shading_normalizer =
-// "newton", the default; "recurrence" keeps the SqrtUnit + divider datapath).
+// "newton", the default; "recurrence" keeps the SqrtExtractor + divider datapath).
 //
 // Input L > 0 (an integer). The unit normalises L by an even shift 2k to the mantissa
 // m = L · 2^-2k in [2^(2P), 2^(2P+2)) (P = kPrecision; right shifts truncate), looks up
@@ -17,7 +17,7 @@
 
 namespace qacc {
 
-class RsqrtUnit {
+class ReciprocalSqrt {
  public:
   static constexpr int kPrecision = 20;  // P: y has P + 1 bits
   static constexpr int kSeedBits = 10;   // ROM index width

@@ -4,7 +4,7 @@
 
 namespace qacc {
 
-std::uint64_t SqrtUnit::recurrence(unsigned __int128 n, int inputBits, int radix) {
+std::uint64_t SqrtExtractor::recurrence(unsigned __int128 n, int inputBits, int radix) {
   // Partial remainder r and partial root q. Each radix-2 step brings down two operand
   // bits and decides one root bit: trial = 4 r + next2 − (4 q + 1). A radix-4 step
   // decides two bits at once by selecting the largest digit d in {0..3} with
@@ -42,7 +42,7 @@ std::uint64_t SqrtUnit::recurrence(unsigned __int128 n, int inputBits, int radix
   return std::uint64_t(q);
 }
 
-std::uint64_t SqrtUnit::compute(unsigned __int128 n) {
+std::uint64_t SqrtExtractor::compute(unsigned __int128 n) {
   if (n == 0) return 0;
   if (n < ((unsigned __int128)1 << 64)) {  // common case: 64-bit operand
     const std::uint64_t m = std::uint64_t(n);
@@ -57,12 +57,6 @@ std::uint64_t SqrtUnit::compute(unsigned __int128 n) {
   while (x * x > n) --x;
   while ((x + 1) * (x + 1) <= n) ++x;
   return std::uint64_t(x);
-}
-
-int SqrtUnit::latency(int inputBits, int radix) {
-  const int resultBits = (inputBits + 1) / 2;
-  const int perStep = radix == 4 ? 2 : 1;
-  return (resultBits + perStep - 1) / perStep + 1;
 }
 
 }  // namespace qacc

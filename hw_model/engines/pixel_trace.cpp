@@ -23,13 +23,13 @@ PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const Hw
     for (int y = s.y0; y < s.y1; ++y) {
       RowSpans r;
       r.y = y;
-      r.n = TraversalUnit::spans(s, y, s.x0, s.x1, r.s);
+      r.n = solveSpans(s, y, s.x0, s.x1, r.s);
       if (r.n == 0) continue;
       for (int k = 0; k < r.n; ++k) count += std::size_t(r.s[k].x1 - r.s[k].x0);
       rows.push_back(r);
     }
     out.reserve(count);
-    PixelPipeline pp(s, cfg);
+    PixelDatapath pp(s, cfg);
     for (const RowSpans& r : rows) {
       const int y = r.y;
       const Span* sp = r.s;

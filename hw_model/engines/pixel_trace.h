@@ -1,6 +1,6 @@
 // PixelTrace: the pixel pipelines' datapath results for every pixel the traversal issues,
 // per primitive in traversal order (rows top to bottom, spans left to right), computed by
-// the shared PixelPipeline arithmetic (forward differences along each span, exactly the
+// the shared PixelDatapath arithmetic (forward differences along each span, exactly the
 // functional engine's code) in parallel before the cycle-level timing loop runs.
 //
 // The cycle engine is functional-first, timing-directed: the arithmetic of a pixel does
@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "hw_model/config/hw_config.h"
-#include "hw_model/report/hw_stats.h"
+#include "hw_model/datapath/overflow_counters.h"
 #include "hw_model/datapath/primitive_setup.h"
-#include "hw_model/timing/traversal_unit.h"
+#include "hw_model/datapath/span_solver.h"
 
 namespace qacc {
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "hw_model/datapath/reciprocal_sqrt.h"
+#include "hw_model/timing/pixel_pipeline_unit.h"
 
 namespace qacc {
 
@@ -60,7 +61,7 @@ CostModel CostModel::of(const HwConfig& c) {
   const double capGe = K * (linInterp + adder(c.depth_bits)) + 2 * adder(c.depth_bits);
   const double pipeGe = 2 * quadInterp + linInterp + digitRecurrence(sqrtOut, sqrtOut + 2, c.sqrt_radix) + depthGe +
                         clipGe + capGe +
-                        reg(double(c.pixelPipelineLatency()) * (tokenBits + c.depth_bits)) +
+                        reg(double(PixelPipelineUnit::Params::from(c).latency) * (tokenBits + c.depth_bits)) +
                         3 * reg(double(c.pixel_fifo_depth) * tokenBits);
   m.units.push_back({"pixel_pipeline", P, pipeGe, 0,
                      "Δ and c quadratic, b linear interpolators; sqrt (" + std::to_string(sqrtIn) + "-bit input, radix " +
@@ -78,10 +79,10 @@ CostModel CostModel::of(const HwConfig& c) {
   // light per cycle), dot products, colour, specular table and sRGB ROM.
   const int nb = c.normal_bits, uf = c.unit_frac_bits, cf = c.color_frac_bits, G = 8;
   const double field = 3 * (linInterp + multiplier(nb + 8, c.depth_bits));
-  const int Pr = RsqrtUnit::kPrecision;
+  const int Pr = ReciprocalSqrt::kPrecision;
   const double rsqrt =
       c.shading_normalizer == Normalizer::Newton
-          ? shifter(2 * nb) + rom(RsqrtUnit::romBits()) + multiplier(Pr + 1, Pr + 1) +
+          ? shifter(2 * nb) + rom(ReciprocalSqrt::romBits()) + multiplier(Pr + 1, Pr + 1) +
                 multiplier(2 * Pr + 2, 2 * Pr + 2) + adder(4 * Pr + 4) + multiplier(Pr + 1, 2 * Pr + 2) +
                 3 * multiplier(nb, Pr + 1)
           : digitRecurrence(nb + G, nb + G + 2, c.sqrt_radix) + digitRecurrence(uf + 2, uf + G + nb, c.divider_radix) +
@@ -90,7 +91,7 @@ CostModel CostModel::of(const HwConfig& c) {
   const double dot3 = 3 * multiplier(uf + 2, uf + 2) + 2 * adder(2 * uf + 4);
   const double colour = 3 * (multiplier(cf + 2, uf + 2) + multiplier(cf + 8, cf + 2) + 2 * adder(cf + 8));
   const double specRom = double((1 << uf) + 1) * (cf + 4), srgbRom = double((1 << cf) + 1) * 8;
-  const double rsqrtRom = c.shading_normalizer == Normalizer::Newton ? 3.0 * RsqrtUnit::romBits() : 0.0;
+  const double rsqrtRom = c.shading_normalizer == Normalizer::Newton ? 3.0 * ReciprocalSqrt::romBits() : 0.0;
   m.units.push_back({"shading", P,
                      2 * field + 3 * normaliser + 3 * dot3 + colour + rom(specRom + srgbRom) +
                          reg(double(c.shading_latency) * (zReqBits + 3 * (uf + 2))),

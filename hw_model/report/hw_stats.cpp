@@ -10,16 +10,6 @@
 
 namespace qacc {
 
-void OverflowCounters::add(const OverflowCounters& o) {
-  setup.events += o.setup.events;
-  interpolator.events += o.interpolator.events;
-  sqrt.events += o.sqrt.events;
-  depth.events += o.depth.events;
-  clip.events += o.clip.events;
-  shading.events += o.shading.events;
-  depth_clamps += o.depth_clamps;
-}
-
 void PixelCounters::add(const PixelCounters& o) {
   tested += o.tested;
   covered += o.covered;

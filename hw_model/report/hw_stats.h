@@ -4,23 +4,11 @@
 #include <string>
 #include <vector>
 
-#include "hw_model/report/cost_model.h"
-#include "hw_model/datapath/fixed_point.h"
 #include "hw_model/config/hw_config.h"
+#include "hw_model/datapath/overflow_counters.h"
+#include "hw_model/report/cost_model.h"
 
 namespace qacc {
-
-// Overflow events per datapath (a value that did not fit its register: saturated or
-// wrapped, never silent), and clamps (depths beyond the depth datapath's range, which
-// are outside the view volume by construction and are clamped by design).
-struct OverflowCounters {
-  OverflowCounter setup, interpolator, sqrt, depth, clip, shading;
-  std::uint64_t depth_clamps = 0;
-  void add(const OverflowCounters& o);
-  std::uint64_t total() const {
-    return setup.events + interpolator.events + sqrt.events + depth.events + clip.events + shading.events;
-  }
-};
 
 struct PixelCounters {
   std::uint64_t tested = 0;          // issued by traversal

@@ -1,7 +1,6 @@
-// DelayQueue<T>: the in-flight contents of a pipelined unit — entries leave in the order
-// they entered, each when its ready cycle comes. A ring buffer that grows by doubling
-// (a unit's depth bounds it after the first few cycles), so the cycle loop allocates
-// nothing in steady state.
+// DelayQueue<T>: the storage of a channel (channel.h) — a FIFO ring buffer that grows by
+// doubling (a channel's capacity, or a pipeline's depth, bounds it after the first few
+// cycles), so the cycle loop allocates nothing in steady state.
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -15,6 +14,7 @@ class DelayQueue {
   std::size_t size() const { return size_; }
   T& front() { return ring_[head_]; }
   const T& front() const { return ring_[head_]; }
+  const T& back() const { return ring_[(head_ + size_ - 1) & (ring_.size() - 1)]; }
   void push_back(const T& v) {
     if (size_ == ring_.size()) grow();
     ring_[(head_ + size_) & (ring_.size() - 1)] = v;

@@ -2,16 +2,18 @@
 
 namespace qacc {
 
-bool HostInterface::tick(std::uint64_t now) {
+bool HostInterfaceUnit::tick(std::uint64_t now) {
   bool changed = false;
   if (!busy_ && next_ < int(setups_.size())) {
     busy_ = true;
-    readyAt_ = now + std::uint64_t(transferCycles(setups_[std::size_t(next_)].descriptorWords, cfg_)) - 1;
+    // The last word arrives transferCycles - 1 cycles after the first; the descriptor is
+    // handed on in that cycle.
+    readyAt_ = now + std::uint64_t(p_.transferCycles(setups_[std::size_t(next_)].descriptorWords)) - 1;
     changed = true;
   }
   if (busy_ && now >= readyAt_) {
-    if (out_.canPush()) {
-      out_.push(next_++);
+    if (out_.canSend()) {
+      out_.send(next_++);
       busy_ = false;
       countItem();
       changed = true;

@@ -1,32 +1,43 @@
-// HostInterface: the primitive descriptors (10 coefficients + 4 words per clip plane +
+// HostInterfaceUnit: the primitive descriptors (10 coefficients + 4 words per clip plane +
 // material/object/flags) arrive in scene order over a bus of bus_width_bits, one transfer
-// every bus_cycles_per_word cycles; a descriptor goes to the setup FIFO once complete.
+// every bus_cycles_per_word cycles; a descriptor goes to the setup channel once complete.
 #pragma once
 #include <vector>
 
-#include "hw_model/timing/fifo.h"
 #include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/primitive_setup.h"
+#include "hw_model/timing/channel.h"
+#include "hw_model/timing/tokens.h"
 #include "hw_model/timing/unit.h"
 
 namespace qacc {
 
-class HostInterface : public Unit {
+class HostInterfaceUnit : public Unit {
  public:
-  static int transferCycles(int descriptorWords, const HwConfig& cfg) {
-    const long long bits = (long long)descriptorWords * cfg.descriptor_word_bits;
-    return int((bits + cfg.bus_width_bits - 1) / cfg.bus_width_bits) * cfg.bus_cycles_per_word;
-  }
-  HostInterface(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, Fifo<int>& out)
-      : Unit("host_interface"), setups_(setups), cfg_(cfg), out_(out) {}
+  struct Params {
+    int bus_width_bits = 32;
+    int bus_cycles_per_word = 1;
+    int descriptor_word_bits = 32;
+    static Params from(const HwConfig& cfg) {
+      return {cfg.bus_width_bits, cfg.bus_cycles_per_word, cfg.descriptor_word_bits};
+    }
+    // Cycles to transfer a descriptor of `words` words.
+    int transferCycles(int words) const {
+      const long long bits = (long long)words * descriptor_word_bits;
+      return int((bits + bus_width_bits - 1) / bus_width_bits) * bus_cycles_per_word;
+    }
+  };
+
+  HostInterfaceUnit(const Params& p, const std::vector<PrimitiveSetup>& setups, Channel<PrimitiveToken>& out)
+      : Unit("host_interface"), p_(p), setups_(setups), out_(out) {}
   bool tick(std::uint64_t now) override;
   std::uint64_t nextEvent() const override { return busy_ ? readyAt_ : Unit::nextEvent(); }
   bool holdsWork() const override { return next_ < int(setups_.size()) || busy_; }
 
  private:
+  Params p_;
   const std::vector<PrimitiveSetup>& setups_;
-  const HwConfig& cfg_;
-  Fifo<int>& out_;
+  Channel<PrimitiveToken>& out_;
   int next_ = 0;
   bool busy_ = false;
   std::uint64_t readyAt_ = 0;

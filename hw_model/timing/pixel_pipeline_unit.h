@@ -1,56 +1,68 @@
-// PixelPipelineUnit: timing of one pixel pipeline (interpolators, square root, depth,
-// clip, caps; PixelPipeline holds the arithmetic, whose result for each issued pixel the
-// unit takes from the PixelTrace). Fully pipelined: accepts one pixel per cycle, or one
-// every `clip passes` cycles when a primitive has more planes than the K clip evaluators;
-// results leave in order after pixelPipelineLatency() cycles; pixels with a visible point
-// go on to the Z-buffer, the others retire.
+// PixelPipelineUnit: timing of one pixel pipeline — interpolators, square-root extractor,
+// depth unit, clip unit, caps (the arithmetic is datapath/pixel_datapath.h; the unit takes
+// each issued pixel's result from the pixel trace). Fully pipelined: accepts one pixel per
+// cycle, or one every `clip passes` cycles when a primitive has more planes than the K clip
+// evaluators; results leave in order after the pipeline's latency; pixels with a visible
+// point go on to the Z-buffer, the others retire.
 #pragma once
-#include <vector>
+#include <string>
 
-#include "hw_model/timing/delay_queue.h"
-#include "hw_model/timing/fifo.h"
 #include "hw_model/config/hw_config.h"
-#include "hw_model/engines/frame_setup.h"
+#include "hw_model/datapath/zbuffer_memory.h"
 #include "hw_model/engines/pixel_trace.h"
-#include "hw_model/timing/traversal_unit.h"
+#include "hw_model/timing/channel.h"
+#include "hw_model/timing/pipeline.h"
+#include "hw_model/timing/tokens.h"
 #include "hw_model/timing/unit.h"
 
 namespace qacc {
 
-struct ZRequest {
-  int prim = 0;
-  int x = 0, y = 0;
-  int cap = -1;
-  i128 z = 0;
-};
-
 class PixelPipelineUnit : public Unit {
  public:
+  struct Params {
+    int latency = 0;  // cycles from a pixel's entry to its result
+    static Params from(const HwConfig& cfg) {
+      // interpolators (1) + square root + depth (divider, or one multiplier stage and a
+      // rounding stage for the reciprocal variant) + clip (1) + caps (1)
+      const int depth =
+          cfg.depth_variant == DepthVariant::Stable ? dividerLatency(cfg.depth_bits, cfg.divider_radix) : 2;
+      return {1 + sqrtLatency(cfg.delta_bits, cfg.sqrt_radix) + depth + 1 + 1};
+    }
+    // The digit-recurrence square root: one step per log2(radix) result bits, plus one.
+    static int sqrtLatency(int inputBits, int radix) {
+      const int resultBits = (inputBits + 1) / 2;
+      const int perStep = radix == 4 ? 2 : 1;
+      return (resultBits + perStep - 1) / perStep + 1;
+    }
+    // The digit-recurrence divider of the stable depth variant, likewise.
+    static int dividerLatency(int quotientBits, int radix) {
+      const int perStep = radix == 4 ? 2 : 1;
+      return (quotientBits + perStep - 1) / perStep + 1;
+    }
+  };
+
   // `zb` is only a host-side hint: the Z-buffer record of a pixel that will reach the Z
   // unit is prefetched into the host's cache when the pixel enters the pipeline (no
   // modeled effect).
-  PixelPipelineUnit(const std::string& name, const PixelTrace& trace, const HwConfig& cfg, Fifo<PixelToken>& in,
-                    Fifo<ZRequest>& out, PixelCounters& px, const ZBufferState* zb = nullptr)
-      : Unit(name), trace_(trace), in_(in), out_(out), px_(px), latency_(std::uint64_t(cfg.pixelPipelineLatency())),
-        zb_(zb) {}
+  PixelPipelineUnit(const std::string& name, const Params& p, ChannelRegistry& wires, const PixelTrace& trace,
+                    Channel<PixelToken>& in, Channel<PointToken>& out, PixelCounters& px,
+                    const ZBufferMemory* zb = nullptr)
+      : Unit(name), trace_(trace), in_(in), out_(out), px_(px), stages_(wires, std::uint64_t(p.latency)), zb_(zb) {}
   bool tick(std::uint64_t now) override;
-  std::uint64_t nextEvent() const override;
-  bool holdsWork() const override { return !inflight_.empty(); }
+  std::uint64_t nextEvent() const override { return stages_.nextEvent(in_.ready()); }
+  bool holdsWork() const override { return stages_.holdsWork(); }
 
  private:
   struct InFlight {
-    std::uint64_t ready;
     bool hit;
-    ZRequest req;
+    PointToken point;
   };
   const PixelTrace& trace_;
-  Fifo<PixelToken>& in_;
-  Fifo<ZRequest>& out_;
+  Channel<PixelToken>& in_;
+  Channel<PointToken>& out_;
   PixelCounters& px_;
-  std::uint64_t latency_;
-  DelayQueue<InFlight> inflight_;
-  std::uint64_t nextAccept_ = 0;
-  const ZBufferState* zb_;
+  Pipeline<InFlight> stages_;
+  const ZBufferMemory* zb_;
 };
 
 }  // namespace qacc

@@ -1,193 +1,12 @@
 #include "hw_model/timing/setup_unit.h"
 
-#include <algorithm>
-#include <cmath>
-
-#include "raster/pixel/window_primitive.h"
-
 namespace qacc {
-
-namespace {
-
-// Affine vector field rows R (3x4, columns u, v, z, 1) → VectorSetup with a shared block
-// exponent so that the largest component over the box uses `bits` bits.
-VectorSetup vectorSetup(const Eigen::Matrix<double, 3, 4>& R, double umax, double vmax, const HwConfig& cfg,
-                        OverflowCounter& ovf) {
-  double bound = 0;
-  for (int i = 0; i < 3; ++i)
-    bound = std::max(bound, std::fabs(R(i, 0)) * umax + std::fabs(R(i, 1)) * vmax + std::fabs(R(i, 2)) +
-                                std::fabs(R(i, 3)));
-  const int ev = blockExponent(bound, cfg.value_bits - 2);
-  const int sc = ev + cfg.interp_frac_bits, w = cfg.value_bits + cfg.interp_frac_bits + 2;
-  VectorSetup v;
-  for (int i = 0; i < 3; ++i) {
-    v.uv[i] = {quantize(R(i, 0), sc, w, cfg.overflow, ovf), quantize(R(i, 1), sc, w, cfg.overflow, ovf),
-               quantize(R(i, 3), sc, w, cfg.overflow, ovf)};
-    v.cz[i] = quantize(R(i, 2), sc, w, cfg.overflow, ovf);
-  }
-  return v;
-}
-
-VectorSetup constantVector(const Eigen::Vector3d& d, const HwConfig& cfg, OverflowCounter& ovf) {
-  Eigen::Matrix<double, 3, 4> R = Eigen::Matrix<double, 3, 4>::Zero();
-  R.col(3) = d;
-  return vectorSetup(R, 0, 0, cfg, ovf);
-}
-
-int floorDiv2(int v) { return v >= 0 ? v / 2 : -((-v + 1) / 2); }
-
-}  // namespace
-
-int SetupUnit::operationCount(int planes, int pointLights, bool facet) {
-  // Multiply-adds of the setup formulas (setup_unit.cpp), counted once:
-  //   window transform Q' = M⁻ᵀ Q M⁻¹: 2 x 4x4x4 = 128; each plane p' = M⁻ᵀ p: 16;
-  //   local origin (Tᵀ Q T, Tᵀ p): 24 + 4 per plane; normalisation (max, exponent): 12;
-  //   contour conic Δ coefficients: 18; conic box (two 2x2 solves, sqrt, divides): 30;
-  //   clip-polytope box: 10 per pair of planes, + 10 per plane;
-  //   plane depths for caps (reciprocal of pz + 3 products): 12 per plane;
-  //   1/a (Newton-Raphson, 3 iterations): 8; seeds: Δ 12, b 3, c 6;
-  //   shading: normal field Q M⁻¹ (48), view field 12, each point light 12.
-  // A facet skips the conic, 1/a and the Δ, c seeds and needs its plane depth (12).
-  const int pairs = planes * (planes - 1) / 2;
-  int ops = 128 + 16 * planes + 24 + 4 * planes + 12 + 10 * pairs + 10 * planes + 12 * planes + 48 + 12 +
-            12 * pointLights;
-  ops += facet ? 12 + 3 : 18 + 30 + 8 + 12 + 3 + 6;
-  return ops;
-}
-
-int SetupUnit::cycles(const PrimitiveSetup& s, const HwConfig& cfg) {
-  return (s.setupOps + cfg.setup_mad_units - 1) / cfg.setup_mad_units;
-}
-
-PrimitiveSetup SetupUnit::run(const Scene& scene, int index, const Eigen::Matrix4d& M, const Eigen::Matrix4d& Minv,
-                              const HwConfig& cfg, OverflowCounter& ovf) {
-  (void)M;
-  const Primitive& prim = scene.primitives[std::size_t(index)];
-  PrimitiveSetup s;
-  s.index = index;
-  s.object = prim.object;
-  s.material = prim.material;
-  s.solid = prim.solid;
-  s.facet = prim.isPlanar() && !prim.solid;
-  int pointLights = 0;
-  for (const Light& l : scene.lights) pointLights += l.type == Light::Type::Point;
-  s.setupOps = operationCount(int(prim.clip.size()), pointLights, s.facet);
-  s.descriptorWords = 10 + 4 * int(prim.clip.size()) + 2;
-
-  const WindowPrimitive w = toWindow(prim, index, Minv, scene.width, scene.height);
-  if (w.box.empty()) return s;
-  s.x0 = w.box.x0;
-  s.y0 = w.box.y0;
-  s.x1 = w.box.x1;
-  s.y1 = w.box.y1;
-  const double umax = s.x1 - s.x0 - 1, vmax = s.y1 - s.y0 - 1;
-  Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
-  T(0, 3) = s.x0 + 0.5;
-  T(1, 3) = s.y0 + 0.5;
-  const int Fi = cfg.interp_frac_bits, Fz = cfg.depth_frac_bits;
-  const int zkWidth = cfg.depth_bits + Fi + 16;
-
-  // Clip planes in local window coordinates: value = pu u + pv v + pz z + p0.
-  for (std::size_t i = 0; i < w.clip.size(); ++i) {
-    const Eigen::Vector4d pl = T.transpose() * w.clip[i].p;
-    PlaneSetup ps;
-    ps.owns = w.clip[i].owns_boundary;
-    const double bound = std::fabs(pl[0]) * umax + std::fabs(pl[1]) * vmax + std::fabs(pl[3]) + std::fabs(pl[2]);
-    const int ep = blockExponent(bound, cfg.clip_bits - 2);
-    const int sc = ep + Fi, wd = cfg.clip_bits + Fi + 2;
-    ps.h = {quantize(pl[0], sc, wd, cfg.overflow, ovf), quantize(pl[1], sc, wd, cfg.overflow, ovf),
-            quantize(pl[3], sc, wd, cfg.overflow, ovf)};
-    ps.pz = quantize(pl[2], sc, wd, cfg.overflow, ovf);
-    ps.zdir = ps.pz > 0 ? 1 : (ps.pz < 0 ? -1 : 0);
-    if (ps.zdir != 0 && s.solid) {
-      const int zs = Fz + Fi;
-      ps.zk = {quantize(-pl[0] / pl[2], zs, zkWidth, cfg.overflow, ovf),
-               quantize(-pl[1] / pl[2], zs, zkWidth, cfg.overflow, ovf),
-               quantize(-pl[3] / pl[2], zs, zkWidth, cfg.overflow, ovf)};
-    }
-    const Eigen::Vector3d n = prim.clip[i].p.head<3>();
-    const VectorSetup cn = constantVector(n, cfg, ovf);
-    for (int k = 0; k < 3; ++k) ps.capNormal[k] = cn.uv[k].C;
-    s.planes.push_back(ps);
-  }
-
-  if (s.facet) {
-    const Eigen::Vector4d p(2 * prim.quadric.Q(0, 3), 2 * prim.quadric.Q(1, 3), 2 * prim.quadric.Q(2, 3),
-                            prim.quadric.Q(3, 3));
-    const Eigen::Vector4d pl = T.transpose() * (Minv.transpose() * p);
-    const double bound = std::fabs(pl[0]) * umax + std::fabs(pl[1]) * vmax + std::fabs(pl[3]);
-    if (!(std::fabs(pl[2]) > 1e-12 * bound)) return s;  // seen edge-on: nothing to draw
-    const int zs = Fz + Fi;
-    s.facetZ = {quantize(-pl[0] / pl[2], zs, zkWidth, cfg.overflow, ovf),
-                quantize(-pl[1] / pl[2], zs, zkWidth, cfg.overflow, ovf),
-                quantize(-pl[3] / pl[2], zs, zkWidth, cfg.overflow, ovf)};
-    s.fullRows = true;
-  } else {
-    const Eigen::Matrix4d Ql = T.transpose() * w.Q * T;
-    const double a = Ql(2, 2), bu = Ql(0, 2), bv = Ql(1, 2), b0 = Ql(2, 3);
-    const double cuu = Ql(0, 0), cuv = 2 * Ql(0, 1), cvv = Ql(1, 1), cu = 2 * Ql(0, 3), cv = 2 * Ql(1, 3),
-                 c0 = Ql(3, 3);
-    s.tA = bu * bu - a * cuu;
-    s.tB = 2 * bu * bv - a * cuv;
-    s.tC = bv * bv - a * cvv;
-    s.tD = 2 * bu * b0 - a * cu;
-    s.tE = 2 * bv * b0 - a * cv;
-    s.tF = b0 * b0 - a * c0;
-    s.fullRows = s.solid && !(a > 0);
-    const double bMax = std::fabs(bu) * umax + std::fabs(bv) * vmax + std::fabs(b0);
-    const double cMax = std::fabs(cuu) * umax * umax + std::fabs(cuv) * umax * vmax + std::fabs(cvv) * vmax * vmax +
-                        std::fabs(cu) * umax + std::fabs(cv) * vmax + std::fabs(c0);
-    s.e = blockExponent(std::max({std::fabs(a), bMax, cMax}), cfg.value_bits - 2);
-    const int vw = cfg.value_bits, cw = cfg.value_bits + Fi + 2;
-    s.a = quantize(a, s.e, vw, cfg.overflow, ovf);
-    s.aSign = s.a > 0 ? 1 : (s.a < 0 ? -1 : 0);
-    const int sb = s.e + Fi;
-    s.b = {quantize(bu, sb, cw, cfg.overflow, ovf), quantize(bv, sb, cw, cfg.overflow, ovf),
-           quantize(b0, sb, cw, cfg.overflow, ovf)};
-    s.c = {quantize(cuu, sb, cw, cfg.overflow, ovf), quantize(cuv, sb, cw, cfg.overflow, ovf),
-           quantize(cvv, sb, cw, cfg.overflow, ovf), quantize(cu, sb, cw, cfg.overflow, ovf),
-           quantize(cv, sb, cw, cfg.overflow, ovf), quantize(c0, sb, cw, cfg.overflow, ovf)};
-    const double dMax = std::fabs(s.tA) * umax * umax + std::fabs(s.tB) * umax * vmax + std::fabs(s.tC) * vmax * vmax +
-                        std::fabs(s.tD) * umax + std::fabs(s.tE) * vmax + std::fabs(s.tF);
-    s.ed = floorDiv2(blockExponent(dMax, cfg.delta_bits - 2));
-    const int sd = 2 * s.ed + Fi, dw = cfg.interp_acc_bits;
-    s.delta = {quantize(s.tA, sd, dw, cfg.overflow, ovf), quantize(s.tB, sd, dw, cfg.overflow, ovf),
-               quantize(s.tC, sd, dw, cfg.overflow, ovf), quantize(s.tD, sd, dw, cfg.overflow, ovf),
-               quantize(s.tE, sd, dw, cfg.overflow, ovf), quantize(s.tF, sd, dw, cfg.overflow, ovf)};
-    if (s.a != 0) {
-      // 1/a as a normalised mantissa: recipM = round(2^recipShift / a), |recipM| < 2^(recip_bits-1).
-      s.recipShift = cfg.recip_bits - 3 + bitLength(s.a);
-      s.recipM = divRound(i128(1) << s.recipShift, s.a, cfg.rounding);
-      s.recipValid = true;
-    }
-  }
-
-  // Shading fields: homogeneous world point X(u, v, z) = Minv T (u, v, z, 1); the normal is
-  // (Q X)_xyz, the view vector eye·X_w − X_xyz (perspective), a point light pos·X_w − X_xyz.
-  const Eigen::Matrix4d Ml = Minv * T;
-  const Eigen::Matrix<double, 3, 4> N = (prim.quadric.Q * Ml).topRows<3>();
-  s.normal = vectorSetup(N, umax, vmax, cfg, ovf);
-  if (scene.camera.type == Camera::Type::Orthographic) {
-    s.viewConstant = true;
-    s.view = constantVector(-scene.camera.forward(), cfg, ovf);
-  } else {
-    const Eigen::Matrix<double, 3, 4> V = scene.camera.eye * Ml.row(3) - Ml.topRows<3>();
-    s.view = vectorSetup(V, umax, vmax, cfg, ovf);
-  }
-  for (const Light& l : scene.lights) {
-    if (l.type != Light::Type::Point) continue;
-    const Eigen::Matrix<double, 3, 4> L = l.position * Ml.row(3) - Ml.topRows<3>();
-    s.pointLights.push_back(vectorSetup(L, umax, vmax, cfg, ovf));
-  }
-  s.visible = true;
-  return s;
-}
 
 bool SetupUnit::tick(std::uint64_t now) {
   bool changed = false;
   if (current_ >= 0 && now >= readyAt_) {
-    if (out_.canPush()) {
-      out_.push(current_);
+    if (out_.canSend()) {
+      out_.send(current_);
       current_ = -1;
       changed = true;
     } else {
@@ -195,10 +14,10 @@ bool SetupUnit::tick(std::uint64_t now) {
       return false;
     }
   }
-  if (current_ < 0 && !in_.empty()) {
+  if (current_ < 0 && in_.ready()) {
     current_ = in_.front();
-    in_.pop();
-    readyAt_ = now + std::uint64_t(std::max(1, cycles(setups_[std::size_t(current_)], cfg_)));
+    in_.receive();
+    readyAt_ = now + std::uint64_t(p_.cycles(setups_[std::size_t(current_)]));
     countItem();
     changed = true;
   }

@@ -1,209 +1,24 @@
 #include "hw_model/timing/shading_unit.h"
 
-#include <algorithm>
-#include <cmath>
-#include <type_traits>
-
-#include "hw_model/datapath/reciprocal_sqrt.h"
-#include "hw_model/datapath/sqrt_extractor.h"
-#include "raster/pixel/shading.h"
-
 namespace qacc {
 
-LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg) {
-  LightingSetup L;
-  OverflowCounter ovf;
-  const int cf = cfg.color_frac_bits, uf = cfg.unit_frac_bits;
-  int point = 0;
-  for (const Light& l : scene.lights) {
-    LightQ q;
-    q.type = l.type;
-    for (int k = 0; k < 3; ++k) q.color[k] = quantize(std::max(0.0, l.color[k]), cf, cf + 8, cfg.overflow, ovf);
-    if (l.type == Light::Type::Directional) {
-      const Eigen::Vector3d d = -l.direction.normalized();
-      for (int k = 0; k < 3; ++k) q.dir[k] = quantize(d[k], uf, uf + 2, cfg.overflow, ovf);
-    } else if (l.type == Light::Type::Point) {
-      q.point = point++;
-    }
-    L.lights.push_back(q);
-  }
-  std::vector<Material> mats = scene.materials;
-  if (mats.empty()) mats.emplace_back();
-  for (const Material& m : mats) {
-    MaterialQ q;
-    for (int k = 0; k < 3; ++k) q.color[k] = quantize(std::clamp(m.color[k], 0.0, 1.0), cf, cf + 2, cfg.overflow, ovf);
-    const int n = (1 << uf) + 1;
-    q.specular.resize(std::size_t(n));
-    for (int i = 0; i < n; ++i)
-      q.specular[std::size_t(i)] =
-          std::int32_t(std::lround(std::ldexp(m.specular * std::pow(std::ldexp(double(i), -uf), m.shininess), cf)));
-    L.materials.push_back(std::move(q));
-  }
-  const int ns = (1 << cf) + 1;
-  L.srgb.resize(std::size_t(ns));
-  for (int i = 0; i < ns; ++i) L.srgb[std::size_t(i)] = linearToSrgb8(std::ldexp(double(i), -cf));
-  return L;
-}
-
-namespace {
-
-// The shading datapath after the exact field evaluation, with registers of type T. Every
-// value after the leading-zero normaliser has at most normal_bits bits, so T =
-// std::int64_t holds all of it when normal_bits <= 23 (len² · 2^2G < 3 · 2^60); the i128
-// instantiation serves wider configurations. Both give the same bits.
-// floor(sqrt(x)) for 0 <= x < 2^63: the double estimate is off by at most one.
-inline std::int64_t isqrt63(std::int64_t x) {
-  std::int64_t q = std::int64_t(std::sqrt(double(x)));
-  if (q * q > x) --q;
-  else if ((q + 1) * (q + 1) <= x) ++q;
-  return q;
-}
-
-inline bool fits63(i128 v) { return v > -(i128(1) << 62) && v < (i128(1) << 62); }
-
-template <typename T>
-void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
-  const int nb = cfg.normal_bits, uf = cfg.unit_frac_bits, G = 8;
-  T n[3];
-  if (std::is_same_v<T, std::int64_t> && fits63(in[0]) && fits63(in[1]) && fits63(in[2])) {
-    // The same normaliser on 64-bit registers.
-    const std::int64_t a[3] = {std::int64_t(in[0]), std::int64_t(in[1]), std::int64_t(in[2])};
-    const std::uint64_t m = std::uint64_t(a[0] < 0 ? -a[0] : a[0]) | std::uint64_t(a[1] < 0 ? -a[1] : a[1]) |
-                            std::uint64_t(a[2] < 0 ? -a[2] : a[2]);
-    if (m == 0) {
-      out[0] = out[1] = out[2] = 0;
-      return;
-    }
-    const int shift = (64 - __builtin_clzll(m)) - (nb - 1);  // leading-zero normaliser
-    for (int k = 0; k < 3; ++k)
-      n[k] = T(shift > 0 ? shiftRoundT<std::int64_t>(a[k], shift, cfg.rounding) : a[k] * (std::int64_t(1) << -shift));
-  } else {
-    int len = 0;
-    for (int k = 0; k < 3; ++k) len = std::max(len, bitLength(in[k]));
-    if (len == 0) {
-      out[0] = out[1] = out[2] = 0;
-      return;
-    }
-    const int shift = len - (nb - 1);  // leading-zero normaliser
-    for (int k = 0; k < 3; ++k) n[k] = T(shift > 0 ? shiftRound(in[k], shift, cfg.rounding) : shl(in[k], -shift));
-  }
-  const T len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-  if (cfg.shading_normalizer == Normalizer::Newton) {
-    // unit = n / sqrt(len2) in 1.uf, with 1/sqrt(len2) = y · 2^-(2P+1+k) from the rsqrt unit.
-    const RsqrtUnit::Result r = RsqrtUnit::compute((unsigned __int128)len2);
-    const int sh = r.k + 2 * RsqrtUnit::kPrecision + 1 - uf;
-    for (int k = 0; k < 3; ++k) out[k] = shiftRoundT<T>(n[k] * T(r.y), sh, cfg.rounding);
-    return;
-  }
-  // Reciprocal square root by recurrence: R = 2^(uf + G + nb - 1) / sqrt(len2 · 2^2G), then unit = n R >> (nb - 1).
-  T root;
-  if constexpr (std::is_same_v<T, std::int64_t>) root = isqrt63(len2 * (T(1) << (2 * G)));
-  else root = T(SqrtUnit::compute((unsigned __int128)(len2 * (T(1) << (2 * G)))));
-  if (root == 0) {
-    out[0] = out[1] = out[2] = 0;
-    return;
-  }
-  const T R = T(divRound(i128(1) << (uf + G + nb - 1), root, cfg.rounding));
-  for (int k = 0; k < 3; ++k) out[k] = shiftRoundT<T>(n[k] * R, nb - 1, cfg.rounding);
-}
-
-inline i128 evalField(const VectorSetup& f, int k, int u, int v, i128 z, int Fz) {
-  const LinearCoefficients& c = f.uv[k];
-  return shl(c.A * u + c.B * v + c.C, Fz) + f.cz[k] * z;
-}
-
-template <typename T>
-inline T dot(const T a[3], const T b[3], int uf, Rounding r) {
-  return shiftRoundT<T>(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf, r);
-}
-
-template <typename T>
-std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
-                                   int v, i128 z, int cap) {
-  const int Fz = cfg.depth_frac_bits, uf = cfg.unit_frac_bits, cf = cfg.color_frac_bits;
-  const Rounding rm = cfg.rounding;
-  i128 raw[3];
-  T N[3], V[3];
-  if (cap >= 0) {
-    for (int k = 0; k < 3; ++k) raw[k] = s.planes[std::size_t(cap)].capNormal[k];
-  } else {
-    for (int k = 0; k < 3; ++k) raw[k] = evalField(s.normal, k, u, v, z, Fz);
-  }
-  normalizeT<T>(raw, cfg, N);
-  for (int k = 0; k < 3; ++k) raw[k] = evalField(s.view, k, u, v, z, Fz);
-  normalizeT<T>(raw, cfg, V);
-  if (dot<T>(N, V, uf, rm) < 0)
-    for (int k = 0; k < 3; ++k) N[k] = -N[k];  // two-sided
-  const int mi = s.material >= 0 && s.material < int(L.materials.size()) ? s.material : 0;
-  const LightingSetup::MaterialQ& m = L.materials[std::size_t(mi)];
-  const T one = T(1) << uf;
-  T out[3] = {0, 0, 0};
-  for (const LightingSetup::LightQ& l : L.lights) {
-    if (l.type == Light::Type::Ambient) {
-      for (int k = 0; k < 3; ++k) out[k] += shiftRoundT<T>(T(l.color[k]) * T(m.color[k]), cf, rm);
-      continue;
-    }
-    T Lv[3];
-    if (l.type == Light::Type::Directional) {
-      for (int k = 0; k < 3; ++k) Lv[k] = T(l.dir[k]);
-    } else {
-      for (int k = 0; k < 3; ++k) raw[k] = evalField(s.pointLights[std::size_t(l.point)], k, u, v, z, Fz);
-      normalizeT<T>(raw, cfg, Lv);
-    }
-    const T ndl = std::min(dot<T>(N, Lv, uf, rm), one);
-    if (ndl <= 0) continue;
-    T H[3];
-    i128 hs[3];
-    for (int k = 0; k < 3; ++k) hs[k] = i128(Lv[k]) + i128(V[k]);
-    normalizeT<T>(hs, cfg, H);
-    const T ndh = std::clamp<T>(dot<T>(N, H, uf, rm), 0, one);
-    const T spec = m.specular[std::size_t(ndh)];
-    for (int k = 0; k < 3; ++k)
-      out[k] += shiftRoundT<T>(T(l.color[k]) * (shiftRoundT<T>(T(m.color[k]) * ndl, uf, rm) + spec), cf, rm);
-  }
-  std::array<std::uint8_t, 3> rgb;
-  const T top = T(1) << cf;
-  for (int k = 0; k < 3; ++k) rgb[std::size_t(k)] = L.srgb[std::size_t(std::clamp<T>(out[k], 0, top))];
-  return rgb;
-}
-
-}  // namespace
-
-std::array<std::uint8_t, 3> ShadingUnit::shade(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg,
-                                               int u, int v, i128 z, int cap, OverflowCounter& ovf) {
-  (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
-  if (cfg.normal_bits <= 23) return shadeT<std::int64_t>(s, L, cfg, u, v, z, cap);
-  return shadeT<i128>(s, L, cfg, u, v, z, cap);
-}
-
-std::array<std::uint8_t, 3> ShadingUnit::shadeWide(const PrimitiveSetup& s, const LightingSetup& L,
-                                                   const HwConfig& cfg, int u, int v, i128 z, int cap) {
-  return shadeT<i128>(s, L, cfg, u, v, z, cap);
-}
-
 bool ShadingUnit::tick(std::uint64_t now) {
+  (void)now;
   bool changed = false;
-  while (!inflight_.empty() && inflight_.front().first <= now) {
-    writer_(ctx_, inflight_.front().second);
-    inflight_.pop_front();
+  while (stages_.done()) {
+    ++delivered_;
+    stages_.retire();
     changed = true;
   }
-  if (now >= nextAccept_ && !in_.empty()) {
-    inflight_.push_back({now + std::uint64_t(cfg_.shading_latency), in_.front()});
-    in_.pop();
-    nextAccept_ = now + std::uint64_t(cfg_.shading_cycles_per_pixel);
+  if (stages_.canAccept() && in_.ready()) {
+    stages_.accept(in_.front(), std::uint64_t(p_.cycles_per_pixel));
+    in_.receive();
     countItem();
     changed = true;
   }
-  if (changed || !inflight_.empty()) countBusy();
+  if (changed || stages_.holdsWork()) countBusy();
   else countIdle();
   return changed;
-}
-
-std::uint64_t ShadingUnit::nextEvent() const {
-  std::uint64_t t = inflight_.empty() ? Unit::nextEvent() : inflight_.front().first;
-  if (!in_.empty()) t = std::min(t, nextAccept_);
-  return t;
 }
 
 }  // namespace qacc

@@ -1,52 +1,44 @@
-// TraversalUnit: scanline traversal of a primitive's screen box (design §3.2 step 3).
-// Per scanline it solves the contour conic Δ(u, v) = 0 for the span(s) where Δ >= 0 (at
-// most two: a hyperbola's row can have two pieces), widened by one pixel against the
-// quantisation of Δ, and issues only those pixels (pixels tested); the pixel pipelines
-// then decide coverage exactly from the interpolated Δ. Caps of solids (a <= 0) and
-// facets can show where Δ < 0: their rows are issued whole. Pixels go to the P
-// pipelines screen-interleaved: pipeline (x + y) mod P, up to P pixels per cycle.
-// spans() is the arithmetic; the cycle engine solves every row once in the pixel
-// datapath pass (pixel_trace.h) and the timed unit walks those rows.
+// TraversalUnit: scanline traversal of a primitive's screen box (design §3.2 step 3): per
+// row, the span(s) where the contour conic Δ >= 0 (datapath/span_solver.h; solved once per
+// row in the pixel datapath pass, engines/pixel_trace.h), issuing only those pixels, to
+// the P pipelines screen-interleaved: pipeline (x + y) mod P, up to P pixels per cycle,
+// in span order, a new row starting on a new cycle.
 #pragma once
 #include <vector>
 
-#include "hw_model/timing/fifo.h"
+#include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/primitive_setup.h"
+#include "hw_model/datapath/span_solver.h"
+#include "hw_model/timing/channel.h"
+#include "hw_model/timing/tokens.h"
 #include "hw_model/timing/unit.h"
 
 namespace qacc {
-
-struct Span {
-  int x0 = 0, x1 = 0;  // [x0, x1) in screen pixels
-};
-
-struct PixelToken {
-  int prim = 0;
-  int x = 0, y = 0;
-  int k = 0;  // issue order within the primitive: its entry in the PixelTrace
-};
 
 struct PixelTrace;
 
 class TraversalUnit : public Unit {
  public:
-  // Spans of row y (screen) restricted to [xlo, xhi); returns their number (0..2).
-  static int spans(const PrimitiveSetup& s, int y, int xlo, int xhi, Span out[2]);
-  static int pipelineOf(int x, int y, int P) { return (x + y) % P; }
+  struct Params {
+    int pipelines = 2;
+    static Params from(const HwConfig& cfg) { return {cfg.pipelines}; }
+    int pipelineOf(int x, int y) const { return (x + y) % pipelines; }
+  };
 
-  // The rows' spans come from the PixelTrace (the same spans(), solved beforehand).
-  TraversalUnit(const std::vector<PrimitiveSetup>& setups, const PixelTrace& trace, Fifo<int>& in,
-                std::vector<Fifo<PixelToken>>& out)
-      : Unit("traversal"), setups_(setups), trace_(trace), in_(in), out_(out) {}
+  // The rows' spans come from the PixelTrace (the same span solver, run beforehand).
+  TraversalUnit(const Params& p, const std::vector<PrimitiveSetup>& setups, const PixelTrace& trace,
+                Channel<PrimitiveToken>& in, std::vector<Channel<PixelToken>*> out)
+      : Unit("traversal"), p_(p), setups_(setups), trace_(trace), in_(in), out_(std::move(out)) {}
   bool tick(std::uint64_t now) override;
   bool holdsWork() const override { return prim_ >= 0; }
 
  private:
   bool nextRow();
+  Params p_;
   const std::vector<PrimitiveSetup>& setups_;
   const PixelTrace& trace_;
-  Fifo<int>& in_;
-  std::vector<Fifo<PixelToken>>& out_;
+  Channel<PrimitiveToken>& in_;
+  std::vector<Channel<PixelToken>*> out_;
   int prim_ = -1;
   std::size_t row_ = 0;  // next row of the primitive's trace
   int y_ = 0;

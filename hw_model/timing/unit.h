@@ -1,12 +1,14 @@
 // Unit: the common shape of every timed unit of the accelerator (design §3.2): a name, a
 // tick() called once per modeled cycle, and busy / stall / idle cycle counters.
 //  - busy:  the unit holds or accepted work this cycle and made progress;
-//  - stall: it had a finished result but could not hand it on (full FIFO, busy bank);
+//  - stall: it had a finished result but could not hand it on (full channel, busy bank);
 //  - idle:  nothing to do.
 // tick() returns true when the unit changed any state (used by the cycle engine to detect
 // cycles where nothing happens and fast-forward to the next timed event).
-// Latency and throughput come from HwConfig; the arithmetic a unit performs lives in the
-// same class as static functions shared with the functional engine.
+// Every unit has its own `Params`, derived from the flat configuration (HwConfig) by
+// `Params::from`, which owns the unit's latency formula; units talk through channels
+// (channel.h) and carry tokens (tokens.h); the arithmetic is the datapath's (datapath/),
+// whose results for each pixel come from the pixel trace.
 #pragma once
 #include <cstdint>
 #include <limits>

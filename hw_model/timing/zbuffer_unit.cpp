@@ -2,45 +2,52 @@
 
 #include <algorithm>
 
-#include "hw_model/datapath/depth_roots.h"
-
 namespace qacc {
+
+ZBufferUnit::ZBufferUnit(const Params& p, const HwConfig& cfg, ChannelRegistry& wires, ZBufferMemory& zb,
+                         std::vector<Channel<PointToken>*> in, std::vector<Channel<PointToken>*> out,
+                         PixelCounters& px)
+    : Unit("zbuffer"), p_(p), cfg_(cfg), zb_(zb), in_(std::move(in)), out_(std::move(out)), px_(px),
+      bankFree_(std::size_t(p.banks), 0) {
+  for (std::size_t i = 0; i < in_.size(); ++i)
+    reads_.push_back(std::make_unique<Pipeline<InFlight>>(wires, std::uint64_t(p.read_latency)));
+}
 
 bool ZBufferUnit::tick(std::uint64_t now) {
   bool changed = false, stalled = false;
   const std::size_t P = in_.size();
   for (std::size_t p = 0; p < P; ++p) {
-    auto& q = inflight_[p];
-    while (!q.empty() && q.front().ready <= now) {
+    Pipeline<InFlight>& q = *reads_[p];
+    while (q.done()) {
       if (q.front().pass) {
-        if (!out_[p].canPush()) {
+        if (!out_[p]->canSend()) {
           stalled = true;
           break;
         }
-        out_[p].push(q.front().req);
+        out_[p]->send(q.front().point);
       }
-      q.pop_front();
+      q.retire();
       changed = true;
     }
   }
   // Issue: one request per pipeline, round-robin priority on bank conflicts.
   for (std::size_t k = 0; k < P; ++k) {
     const std::size_t p = (rr_ + k) % P;
-    if (in_[p].empty()) continue;
-    const ZRequest& r = in_[p].front();
-    const int bank = bankOf(r.x, r.y, cfg_.zbuffer_banks);
+    Channel<PointToken>& in = *in_[p];
+    if (!in.ready()) continue;
+    const PointToken& r = in.front();
+    const int bank = ZBufferMemory::bankOf(r.x, r.y, p_.banks);
     if (bankFree_[std::size_t(bank)] > now) {
       ++conflicts_;
       stalled = true;
       continue;
     }
-    bankFree_[std::size_t(bank)] = now + std::uint64_t(cfg_.zbuffer_bank_busy);
-    const std::size_t pix = std::size_t(r.y) * std::size_t(zb_.width) + std::size_t(r.x);
-    const bool pass = testAndWrite(zb_, pix, DepthUnit::zbufferValue(r.z, cfg_), r.prim, r.z, r.cap);
+    bankFree_[std::size_t(bank)] = now + std::uint64_t(p_.bank_busy);
+    const bool pass = zb_.testAndWrite(zb_.index(r.x, r.y), ZBufferMemory::storedValue(r.z, cfg_), r.prim, r.z, r.cap);
     if (pass) ++px_.written;
     else ++px_.depth_rejected;
-    inflight_[p].push_back({now + std::uint64_t(cfg_.zbuffer_read_latency), pass, {r.prim, r.x, r.y, r.cap, r.z}});
-    in_[p].pop();
+    reads_[p]->accept({pass, r});
+    in.receive();
     countItem();
     changed = true;
   }
@@ -54,18 +61,18 @@ bool ZBufferUnit::tick(std::uint64_t now) {
 std::uint64_t ZBufferUnit::nextEvent() const {
   std::uint64_t t = Unit::nextEvent();
   for (std::size_t p = 0; p < in_.size(); ++p) {
-    if (!inflight_[p].empty()) t = std::min(t, inflight_[p].front().ready);
-    if (!in_[p].empty()) {
-      const ZRequest& r = in_[p].front();
-      t = std::min(t, bankFree_[std::size_t(bankOf(r.x, r.y, cfg_.zbuffer_banks))]);
+    t = std::min(t, reads_[p]->nextEvent(false));
+    if (in_[p]->ready()) {
+      const PointToken& r = in_[p]->front();
+      t = std::min(t, bankFree_[std::size_t(ZBufferMemory::bankOf(r.x, r.y, p_.banks))]);
     }
   }
   return t;
 }
 
 bool ZBufferUnit::holdsWork() const {
-  for (const auto& q : inflight_)
-    if (!q.empty()) return true;
+  for (const auto& q : reads_)
+    if (q->holdsWork()) return true;
   return false;
 }
 

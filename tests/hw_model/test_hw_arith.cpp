@@ -10,7 +10,8 @@
 #include "hw_model/datapath/quadratic_interpolator.h"
 #include "hw_model/engines/frame_setup.h"
 #include "hw_model/datapath/reciprocal_sqrt.h"
-#include "hw_model/timing/shading_unit.h"
+#include "hw_model/datapath/shading_arithmetic.h"
+#include "hw_model/timing/pixel_pipeline_unit.h"
 #include "hw_model/datapath/sqrt_extractor.h"
 #include "modeling/loader/scene_loader.h"
 
@@ -28,18 +29,18 @@ std::uint64_t isqrtRef(std::uint64_t n) {  // independent: binary search
 }
 }  // namespace
 
-TEST(SqrtUnit, ExhaustiveSmallWidthsBothRadices) {
+TEST(SqrtExtractor, ExhaustiveSmallWidthsBothRadices) {
   for (int bits : {2, 4, 8, 12, 16}) {
     for (std::uint64_t n = 0; n < (std::uint64_t(1) << bits); ++n) {
       const std::uint64_t want = isqrtRef(n);
-      ASSERT_EQ(SqrtUnit::recurrence(n, bits, 2), want) << "radix 2, n=" << n;
-      ASSERT_EQ(SqrtUnit::recurrence(n, bits, 4), want) << "radix 4, n=" << n;
-      ASSERT_EQ(SqrtUnit::compute(n), want) << "fast path, n=" << n;
+      ASSERT_EQ(SqrtExtractor::recurrence(n, bits, 2), want) << "radix 2, n=" << n;
+      ASSERT_EQ(SqrtExtractor::recurrence(n, bits, 4), want) << "radix 4, n=" << n;
+      ASSERT_EQ(SqrtExtractor::compute(n), want) << "fast path, n=" << n;
     }
   }
 }
 
-TEST(SqrtUnit, RandomLargeOperands) {
+TEST(SqrtExtractor, RandomLargeOperands) {
   std::mt19937_64 rng(12345);
   for (int i = 0; i < 200000; ++i) {
     const int bits = 17 + int(rng() % 64);  // 17..80 bits (the widest Δ datapath)
@@ -49,20 +50,26 @@ TEST(SqrtUnit, RandomLargeOperands) {
       const std::uint64_t r = std::uint64_t(n >> (bits / 2 + 1)) + 1;
       n = (unsigned __int128)r * r - (i % 3 == 0 ? 1 : 0);
     }
-    const std::uint64_t q = SqrtUnit::compute(n);
+    const std::uint64_t q = SqrtExtractor::compute(n);
     ASSERT_TRUE((unsigned __int128)q * q <= n && (unsigned __int128)(q + 1) * (q + 1) > n);
-    ASSERT_EQ(SqrtUnit::recurrence(n, bits, 2), q);
-    ASSERT_EQ(SqrtUnit::recurrence(n, bits, 4), q);
+    ASSERT_EQ(SqrtExtractor::recurrence(n, bits, 2), q);
+    ASSERT_EQ(SqrtExtractor::recurrence(n, bits, 4), q);
   }
 }
 
-TEST(SqrtUnit, LatencyFromWidthAndRadix) {
-  EXPECT_EQ(SqrtUnit::latency(64, 2), 33);
-  EXPECT_EQ(SqrtUnit::latency(64, 4), 17);
+TEST(PixelPipelineUnit, LatencyFromWidthsAndRadices) {
+  EXPECT_EQ(PixelPipelineUnit::Params::sqrtLatency(64, 2), 33);
+  EXPECT_EQ(PixelPipelineUnit::Params::sqrtLatency(64, 4), 17);
+  EXPECT_EQ(PixelPipelineUnit::Params::dividerLatency(32, 4), 17);
   HwConfig c;
   c.delta_bits = 64;
   c.sqrt_radix = 4;
-  EXPECT_EQ(c.sqrtLatency(), 17);
+  c.depth_bits = 32;
+  c.divider_radix = 4;
+  // interpolators 1 + square root 17 + divider 17 + clip 1 + caps 1
+  EXPECT_EQ(PixelPipelineUnit::Params::from(c).latency, 37);
+  c.depth_variant = DepthVariant::Reciprocal;  // one multiplier and a rounding stage
+  EXPECT_EQ(PixelPipelineUnit::Params::from(c).latency, 22);
 }
 
 TEST(QuadraticInterpolator, ForwardDifferencesEqualDirectEvaluationOver4096Pixels) {
@@ -163,7 +170,7 @@ TEST(ShadingUnit, SixtyFourBitRegistersGiveTheSameBitsAsOneHundredTwentyEight) {
     Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json");
     scene.width = 320;
     scene.height = 240;
-    const HwSceneSetup hs = HwSceneSetup::build(scene, cfg, 1);
+    const FrameSetup hs = FrameSetup::build(scene, cfg, 1);
     std::mt19937_64 rng(7);
     int compared = 0;
     for (const PrimitiveSetup& s : hs.setups) {
@@ -175,8 +182,8 @@ TEST(ShadingUnit, SixtyFourBitRegistersGiveTheSameBitsAsOneHundredTwentyEight) {
         const i128 z = Z(rng);
         const int cap = s.planes.empty() || i % 4 ? -1 : int(i % s.planes.size());
         OverflowCounter ovf;
-        const auto narrow = ShadingUnit::shade(s, hs.lighting, cfg, u, v, z, cap, ovf);
-        const auto wide = ShadingUnit::shadeWide(s, hs.lighting, cfg, u, v, z, cap);
+        const auto narrow = shadePixel(s, hs.lighting, cfg, u, v, z, cap, ovf);
+        const auto wide = shadePixelWide(s, hs.lighting, cfg, u, v, z, cap);
         ASSERT_EQ(narrow, wide) << n << " primitive " << s.index << " at " << u << "," << v;
         ++compared;
       }
@@ -187,10 +194,10 @@ TEST(ShadingUnit, SixtyFourBitRegistersGiveTheSameBitsAsOneHundredTwentyEight) {
 
 // The shading normaliser's reciprocal square root (seed ROM + one Newton step) against
 // the exact value, exhaustively over a range of small inputs and on random large ones.
-TEST(RsqrtUnit, NewtonStepFromTheSeedRomIsAccurateTo18Bits) {
-  const int P = RsqrtUnit::kPrecision;
+TEST(ReciprocalSqrt, NewtonStepFromTheSeedRomIsAccurateTo18Bits) {
+  const int P = ReciprocalSqrt::kPrecision;
   auto relErr = [&](unsigned __int128 L) {
-    const RsqrtUnit::Result r = RsqrtUnit::compute(L);
+    const ReciprocalSqrt::Result r = ReciprocalSqrt::compute(L);
     const double exact = 1.0 / std::sqrt(double(L));
     const double got = std::ldexp(double(r.y), -(2 * P + 1 + r.k));
     return std::fabs(got - exact) / exact;
@@ -205,5 +212,5 @@ TEST(RsqrtUnit, NewtonStepFromTheSeedRomIsAccurateTo18Bits) {
   }
   EXPECT_LT(worst, std::ldexp(1.0, -18));
   EXPECT_GT(worst, 0.0);  // an approximation, not an exact unit
-  EXPECT_EQ(RsqrtUnit::compute(0).y, 0);
+  EXPECT_EQ(ReciprocalSqrt::compute(0).y, 0);
 }

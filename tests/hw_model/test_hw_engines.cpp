@@ -7,7 +7,9 @@
 #include "hw_model/report/accuracy_report.h"
 #include "hw_model/engines/cycle_engine.h"
 #include "hw_model/engines/functional_engine.h"
+#include "hw_model/datapath/setup_arithmetic.h"
 #include "hw_model/timing/host_interface_unit.h"
+#include "hw_model/timing/pixel_pipeline_unit.h"
 #include "hw_model/timing/setup_unit.h"
 #include "modeling/geometry/natural_quadrics.h"
 #include "modeling/loader/scene_loader.h"
@@ -90,14 +92,14 @@ TEST(HwEngines, LonePrimitiveCycleCountMatchesAnalyticExpectation) {
   cfg.pixel_fifo_depth = 64;
   const HwRender r = renderHwCycle(scene, cfg, 1);
   OverflowCounter ovf;
-  const PrimitiveSetup s = SetupUnit::run(scene, 0, scene.camera.worldToWindow(256, 256),
+  const PrimitiveSetup s = setupPrimitive(scene, 0, scene.camera.worldToWindow(256, 256),
                                           scene.camera.worldToWindow(256, 256).inverse(), cfg, ovf);
   // host transfer + setup + one pixel per cycle (one clip pass: 0 planes, surface) +
   // the pipeline, Z-buffer and shading latencies; each of the 5 FIFO hops costs a cycle,
   // the traversal's span solve one more.
-  const std::uint64_t host = std::uint64_t(HostInterface::transferCycles(s.descriptorWords, cfg));
-  const std::uint64_t setup = std::uint64_t(SetupUnit::cycles(s, cfg));
-  const std::uint64_t expected = host + setup + r.stats.pixels.tested + std::uint64_t(cfg.pixelPipelineLatency()) +
+  const std::uint64_t host = std::uint64_t(HostInterfaceUnit::Params::from(cfg).transferCycles(s.descriptorWords));
+  const std::uint64_t setup = std::uint64_t(SetupUnit::Params::from(cfg).cycles(s));
+  const std::uint64_t expected = host + setup + r.stats.pixels.tested + std::uint64_t(PixelPipelineUnit::Params::from(cfg).latency) +
                                  std::uint64_t(cfg.zbuffer_read_latency) + std::uint64_t(cfg.shading_latency) + 5 + 1;
   const double diff = double(r.stats.cycles) - double(expected);
   EXPECT_LE(std::abs(diff), 4.0) << "cycles " << r.stats.cycles << " expected " << expected;

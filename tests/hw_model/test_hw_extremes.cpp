@@ -7,7 +7,7 @@
 #include "hw_model/report/accuracy_report.h"
 #include "hw_model/engines/cycle_engine.h"
 #include "hw_model/engines/functional_engine.h"
-#include "hw_model/timing/setup_unit.h"
+#include "hw_model/datapath/setup_arithmetic.h"
 #include "modeling/geometry/natural_quadrics.h"
 #include "raster/reference/reference_renderer.h"
 
@@ -75,7 +75,7 @@ TEST(HwExtremes, ParaboloidSeenAlongItsAxisHasAZero) {
     const Scene s = makeScene(200, 200, c, {p});
     OverflowCounter ovf;
     const Eigen::Matrix4d M = c.worldToWindow(200, 200);
-    const PrimitiveSetup st = SetupUnit::run(s, 0, M, M.inverse(), HwConfig(), ovf);
+    const PrimitiveSetup st = setupPrimitive(s, 0, M, M.inverse(), HwConfig(), ovf);
     EXPECT_EQ(st.a, 0) << "the case under test: a = 0 in window space";
     const AccuracyReport a = check(s, true, solid ? "solid paraboloid along axis" : "paraboloid along axis");
     EXPECT_EQ(a.pinholes, 0u);

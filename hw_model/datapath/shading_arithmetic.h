@@ -1,0 +1,50 @@
+// Shading arithmetic: design §2 lighting in fixed point (ambient + Lambert + Blinn-Phong per
+// light, two-sided, material colour, 8-bit sRGB out), per visible pixel:
+//  - the normal N, the view vector V and point-light vectors L are affine fields in
+//    (u, v, z) (setup: PrimitiveSetup::normal/view/pointLights; a cap uses its plane's
+//    normal), evaluated exactly, then normalised: a leading-zero shift to normal_bits,
+//    then a reciprocal square root (seed ROM + Newton step, reciprocal_sqrt.h; or, with
+//    shading_normalizer = "recurrence", the digit-recurrence square root and a divider)
+//    and three multiplies → unit vectors in 1.unit_frac;
+//  - dot products in 1.unit_frac; the specular power comes from a per-material table
+//    (ROM) indexed by N·H; colours in 0.color_frac; the sRGB transfer is a table indexed
+//    by the linear colour (color_frac bits).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "hw_model/config/hw_config.h"
+#include "hw_model/datapath/primitive_setup.h"
+#include "modeling/scene/scene.h"
+
+namespace qacc {
+
+// Per-scene lighting constants in the shading formats.
+struct LightingSetup {
+  struct LightQ {
+    Light::Type type = Light::Type::Ambient;
+    i128 color[3] = {0, 0, 0};  // 0.color_frac
+    i128 dir[3] = {0, 0, 0};    // directional: unit vector towards the light (1.unit_frac)
+    int point = -1;             // point light: index into PrimitiveSetup::pointLights
+  };
+  struct MaterialQ {
+    i128 color[3] = {0, 0, 0};
+    std::vector<std::int32_t> specular;  // ROM: specular · (i / 2^unit_frac)^shininess, 0.color_frac
+  };
+  std::vector<LightQ> lights;
+  std::vector<MaterialQ> materials;
+  std::vector<std::uint8_t> srgb;  // ROM: linear i / 2^color_frac → 8-bit sRGB
+  static LightingSetup build(const Scene& scene, const HwConfig& cfg);
+};
+
+// The colour of a visible point (u, v local to the primitive's box, z internal depth, cap
+// plane or -1) in 8-bit sRGB.
+std::array<std::uint8_t, 3> shadePixel(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
+                                       i128 z, int cap, OverflowCounter& ovf);
+// The same datapath with 128-bit registers throughout (shadePixel uses 64-bit registers
+// where the widths allow; the two must agree bit for bit).
+std::array<std::uint8_t, 3> shadePixelWide(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
+                                           int v, i128 z, int cap);
+
+}  // namespace qacc

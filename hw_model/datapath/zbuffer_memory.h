@@ -1,0 +1,51 @@
+// ZBufferMemory: what the Z-buffer holds per pixel, and its read-compare-write (design
+// §3.2): the stored Z value — the top zbuffer_bits of the depth fraction — and, for the
+// final shading, the winner's identity and internal depth, one record per pixel so that a
+// Z test touches one cache line. The test is strict (z < stored), so equal depths keep
+// the earlier primitive. Pixel (x, y) lives in bank (x + y) mod banks; how long a bank is
+// busy is the Z-buffer unit's timing (timing/zbuffer_unit.h).
+#pragma once
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "hw_model/config/hw_config.h"
+#include "hw_model/datapath/fixed_point.h"
+
+namespace qacc {
+
+struct ZEntry {
+  std::int64_t depth = 0;         // the winner's depth in the internal format
+  std::uint32_t z = 0xFFFFFFFFu;  // stored Z value (UINT32_MAX = cleared)
+  std::int32_t prim = -1;         // winning primitive (-1 = none)
+  std::int16_t cap = -1;          // its cap plane (-1 = surface)
+};
+
+struct ZBufferMemory {
+  int width = 0, height = 0;
+  std::vector<ZEntry> px;
+
+  ZBufferMemory(int w, int h) : width(w), height(h), px(std::size_t(w) * std::size_t(h)) {}
+  std::size_t size() const { return px.size(); }
+  void clear() { std::fill(px.begin(), px.end(), ZEntry{}); }  // no winner anywhere
+  std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
+
+  // The read-compare-write: true (and the record replaced) when z is nearer than the
+  // stored value.
+  bool testAndWrite(std::size_t pix, std::uint32_t z, int prim, i128 depth, int cap) {
+    ZEntry& e = px[pix];
+    if (!(z < e.z)) return false;
+    e = {std::int64_t(depth), z, prim, std::int16_t(cap)};
+    return true;
+  }
+  // The value stored for an internal depth: its top zbuffer_bits fraction bits, clamped.
+  static std::uint32_t storedValue(i128 depth, const HwConfig& cfg) {
+    const i128 v = depth >> (cfg.depth_frac_bits - cfg.zbuffer_bits);
+    const i128 top = (i128(1) << cfg.zbuffer_bits) - 1;
+    return std::uint32_t(v < 0 ? 0 : (v > top ? top : v));
+  }
+  static int bankOf(int x, int y, int banks) { return (x + y) % banks; }
+};
+
+}  // namespace qacc

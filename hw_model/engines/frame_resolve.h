@@ -1,0 +1,23 @@
+// Frame resolve: the Z-buffer's winners shaded (shading_arithmetic.h) into the frame
+// buffer — colour, window depth from the stored Z value, object and primitive. `hw` does
+// it per tile as soon as the tile's last primitive is drawn; `hw-cycle` for the whole
+// frame once the pipeline has drained (colours are a pure function of the final winners).
+#pragma once
+#include "hw_model/config/hw_config.h"
+#include "hw_model/datapath/zbuffer_memory.h"
+#include "hw_model/engines/frame_setup.h"
+#include "hw_model/report/hw_stats.h"
+#include "modeling/scene/scene.h"
+#include "raster/image/frame_buffer.h"
+
+namespace qacc {
+
+// Shades one winner into pixel (x, y) of the frame buffer.
+void resolvePixel(const HwConfig& cfg, const FrameSetup& fs, int x, int y, const ZEntry& e, FrameBuffer& fb,
+                  OverflowCounter& ovf);
+
+// Shades every winner of a frame-sized Z-buffer; counts the distinct pixels written.
+FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs, const ZBufferMemory& zb,
+                         int threads, HwStats& stats);
+
+}  // namespace qacc

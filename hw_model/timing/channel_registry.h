@@ -1,0 +1,51 @@
+// ChannelRegistry: the clock of the cycle engine and every channel of the machine. Units
+// are wired in one place (engines/cycle_engine.cpp) with channels the registry makes; at
+// the end of each cycle commitAll() commits every channel (two-phase: the tick order of
+// the units within a cycle does not matter), and idle() says whether anything is still
+// on a wire.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "hw_model/timing/channel.h"
+
+namespace qacc {
+
+class ChannelRegistry {
+ public:
+  std::uint64_t now() const { return now_; }
+  // Capacity 0: unbounded (the stages inside a pipelined unit).
+  template <typename T>
+  Channel<T>& make(std::size_t capacity) {
+    auto c = std::make_unique<Channel<T>>(now_, capacity);
+    Channel<T>& ref = *c;
+    channels_.push_back(std::move(c));
+    return ref;
+  }
+  // End of the cycle: commits every channel, then the clock advances. True when anything
+  // was sent or received during the cycle.
+  bool endCycle() {
+    bool changed = false;
+    for (auto& c : channels_) changed |= c->commit();
+    ++now_;
+    return changed;
+  }
+  // Fast-forward (nothing is sent or received in the skipped cycles).
+  void skipTo(std::uint64_t cycle) { now_ = cycle; }
+  // Takes back the last cycle (the engine ran one idle cycle past the end of the frame).
+  void retractCycle() { --now_; }
+  // Nothing on any wire.
+  bool idle() const {
+    for (const auto& c : channels_)
+      if (!c->idle()) return false;
+    return true;
+  }
+
+ private:
+  std::uint64_t now_ = 0;
+  std::vector<std::unique_ptr<ChannelBase>> channels_;
+};
+
+}  // namespace qacc
