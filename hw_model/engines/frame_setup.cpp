@@ -17,7 +17,7 @@ FrameSetup FrameSetup::build(const Scene& scene, const HwConfig& cfg, int thread
 #pragma omp parallel for schedule(dynamic, 16) num_threads(nt)
   for (int i = 0; i < n; ++i) fs.setups[std::size_t(i)] = setupPrimitive(scene, i, M, Minv, cfg, ovf[std::size_t(i)]);
   for (const auto& o : ovf) fs.overflow.setup.events += o.events;
-  fs.lighting = LightingSetup::build(scene, cfg);
+  fs.lighting = LightingSetup::build(scene, cfg, fs.overflow.shading);
   return fs;
 }
 

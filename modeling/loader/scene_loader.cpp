@@ -70,6 +70,16 @@ Camera readCamera(const JsonNode& n) {
   if (!(c.near < c.far)) (n.has("far") ? n.at("far") : n).fail("near must be smaller than far");
   if (c.type == Camera::Type::Perspective && !(c.near > 0))
     n.fail("perspective cameras need near > 0");
+  // Perspective window depth is 1 - near/w scaled: with far/near above kMaxFarNearRatio the
+  // window-space quadrics lose the depth and the scale they need in double precision (near
+  // 1e-5 filled the frame in the reference and blanked a vase in hw; near 1e-7 with far 3e7
+  // lost a sphere of radius 1e6 in both). Refused rather than drawn wrong.
+  if (c.type == Camera::Type::Perspective && c.far / c.near > kMaxFarNearRatio) {
+    std::ostringstream m;
+    m << "far / near is " << c.far / c.near << ", above the supported " << kMaxFarNearRatio
+      << " (perspective depth precision): raise near or lower far";
+    (n.has("near") ? n.at("near") : n).fail(m.str());
+  }
   n.finish();
   return c;
 }
@@ -232,7 +242,14 @@ void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::m
     o.fail(Limits::exceeded("the scene", scene.primitives.size() + prims.size(), "primitives", limits.max_primitives,
                             "max-primitives"));
   for (Primitive& p : prims) {
-    p.clip.insert(p.clip.end(), clip.begin(), clip.end());
+    // A plane listed twice (in "clip", or already the builder's) is added once: the pair
+    // bounds nothing more, and the accelerator's cap logic lost the cap on such a tie (a
+    // solid showed its inner wall, 29 dB, with unchanged coverage).
+    for (const HalfSpace& h : clip) {
+      bool listed = false;
+      for (const HalfSpace& k : p.clip) listed = listed || (k.p == h.p && k.owns_boundary == h.owns_boundary);
+      if (!listed) p.clip.push_back(h);
+    }
     if (transform.given) p = p.transformed(transform.M);
     if (p.material == 0) p.material = material;
     p.solid = p.solid || solid;

@@ -14,6 +14,8 @@ namespace qacc {
 // Image size limits (documented in docs/SCENES.md).
 constexpr int kMaxImageSide = 16384;                          // width, height <= 16384
 constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;     // width * height <= 64 Mpixel
+// Perspective cameras: far / near <= 1e5 (depth precision of the window-space quadrics).
+constexpr double kMaxFarNearRatio = 1e5;
 
 // Reads and parses a scene file; relative paths inside it resolve against its directory.
 // Input over `limits` is refused with the limit and the option that raises it.

@@ -111,6 +111,20 @@ TEST(Reliability, PrimitiveLimitNamesItsOption) {
   EXPECT_NE(msg.find("--max-primitives"), std::string::npos) << msg;
 }
 
+// near below about 1e-5 was accepted and both engines drew wrong images; near 1e-7 with far
+// 3e7 lost a sphere of radius 1e6 in both (so the accuracy line reported a perfect match).
+TEST(Reliability, ExtremeNearFarRatioIsRefused) {
+  auto withCamera = [](const std::string& cam) {
+    return std::string(R"({"format": "qacc-scene/1", "camera": )") + cam +
+           R"(, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1}]})";
+  };
+  const std::string msg = loadError(withCamera(R"({"eye": [0,0,10], "target": [0,0,0], "near": 1e-5, "far": 50})"));
+  EXPECT_NE(msg.find("/camera/near"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("far / near"), std::string::npos) << msg;
+  EXPECT_NE(loadError(withCamera(R"({"eye": [0,0,10], "target": [0,0,0], "near": 1e-7, "far": 3e7})")), "");
+  EXPECT_EQ(loadError(withCamera(R"({"eye": [0,0,10], "target": [0,0,0], "near": 1e-3, "far": 100})")), "");
+}
+
 // Bond inference used int cells and a 21-bit packed key: coordinates of 1e7 overflowed a
 // signed integer (undefined behaviour, found by UBSan). Atoms that far out still bond.
 TEST(Reliability, BondsFarFromTheOrigin) {
