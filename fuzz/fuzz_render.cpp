@@ -9,6 +9,7 @@
 #include "hw_model/engines/cycle_engine.h"
 #include "hw_model/engines/functional_engine.h"
 #include "modeling/loader/scene_loader.h"
+#include "modeling/scene/scene_error.h"
 #include "raster/reference/reference_renderer.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

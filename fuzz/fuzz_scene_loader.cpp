@@ -6,6 +6,7 @@
 #include <string>
 
 #include "modeling/loader/scene_loader.h"
+#include "modeling/scene/scene_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   // Small limits: the fuzzer looks for crashes, not for the scenes that are merely slow.
