@@ -10,9 +10,8 @@
 
 namespace qacc {
 
-LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg) {
+LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg, OverflowCounter& ovf) {
   LightingSetup L;
-  OverflowCounter ovf;
   const int cf = cfg.color_frac_bits, uf = cfg.unit_frac_bits;
   int point = 0;
   for (const Light& l : scene.lights) {
@@ -34,9 +33,11 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg) {
     for (int k = 0; k < 3; ++k) q.color[k] = quantize(std::clamp(m.color[k], 0.0, 1.0), cf, cf + 2, cfg.overflow, ovf);
     const int n = (1 << uf) + 1;
     q.specular.resize(std::size_t(n));
+    // Entries saturate at the ROM's 32-bit width, counted as shading overflows (a specular
+    // weight above about 5e5 wrapped to negative values before: a 13 dB image, said nowhere).
     for (int i = 0; i < n; ++i)
-      q.specular[std::size_t(i)] =
-          std::int32_t(std::lround(std::ldexp(m.specular * std::pow(std::ldexp(double(i), -uf), m.shininess), cf)));
+      q.specular[std::size_t(i)] = std::int32_t(
+          quantize(m.specular * std::pow(std::ldexp(double(i), -uf), m.shininess), cf, 32, OverflowMode::Saturate, ovf));
     L.materials.push_back(std::move(q));
   }
   const int ns = (1 << cf) + 1;

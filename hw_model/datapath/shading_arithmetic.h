@@ -35,7 +35,9 @@ struct LightingSetup {
   std::vector<LightQ> lights;
   std::vector<MaterialQ> materials;
   std::vector<std::uint8_t> srgb;  // ROM: linear i / 2^color_frac → 8-bit sRGB
-  static LightingSetup build(const Scene& scene, const HwConfig& cfg);
+  // Values that do not fit their formats (light colours of 2^8 and more, specular table
+  // entries of 2^(31 - color_frac) and more) saturate and are counted in `ovf`.
+  static LightingSetup build(const Scene& scene, const HwConfig& cfg, OverflowCounter& ovf);
 };
 
 // The colour of a visible point (u, v local to the primitive's box, z internal depth, cap

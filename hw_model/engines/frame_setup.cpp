@@ -21,7 +21,7 @@ FrameSetup FrameSetup::build(const Scene& scene, const HwConfig& cfg, int thread
     fs.overflow.setup.zeroed += o.zeroed;
     fs.overflow.setup.coarse += o.coarse;
   }
-  fs.lighting = LightingSetup::build(scene, cfg);
+  fs.lighting = LightingSetup::build(scene, cfg, fs.overflow.shading);
   return fs;
 }
 

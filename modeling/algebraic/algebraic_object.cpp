@@ -2,6 +2,7 @@
 
 #include <map>
 #include <memory>
+#include <sstream>
 
 #include "modeling/algebraic/algebraic_surface.h"
 #include "modeling/algebraic/degree_reduction.h"
@@ -41,6 +42,14 @@ AlgebraicSpec readAlgebraicSpec(const JsonNode& o) {
   if (spec.f.degree() < 1) polyNode.fail("the polynomial is constant: it has no surface");
   if (spec.f.degree() > 16) polyNode.fail("degree " + std::to_string(spec.f.degree()) + " is above the supported 16");
   spec.box = readBox(o.at("box"));
+  // Beyond 1e15 the pieces' barycentric matrices (rows x y z 1) lose their rank in double
+  // precision and no quadric piece can be formed.
+  const double extent = std::max(spec.box.min().cwiseAbs().maxCoeff(), spec.box.max().cwiseAbs().maxCoeff());
+  if (extent > 1e15) {
+    std::ostringstream m;
+    m << "box coordinates reach " << extent << ", beyond the supported 1e15 (double precision cannot form the pieces)";
+    o.at("box").fail(m.str());
+  }
 
   DegreeReductionOptions& opt = spec.options;
   if (auto l = o.get("level")) opt.level = int(l->integer(1, 256));
@@ -59,6 +68,17 @@ AlgebraicSpec readAlgebraicSpec(const JsonNode& o) {
 std::vector<Primitive> buildAlgebraic(const JsonNode& o, ObjectContext& ctx) {
   AlgebraicSpec spec = readAlgebraicSpec(o);
   spec.options.material = ctx.material;
+  // The Kuhn mesh of the final level (refinement doubles the level up to max_level) has
+  // 6 level^3 tetrahedra, each a degree-n Bernstein form: refuse before building it.
+  int finalLevel = spec.options.level;
+  if (spec.options.refine_error > 0)
+    while (finalLevel * 2 <= spec.options.max_level) finalLevel *= 2;
+  const std::size_t tets = 6 * std::size_t(finalLevel) * std::size_t(finalLevel) * std::size_t(finalLevel);
+  if (tets > ctx.limits.max_cells)
+    o.get(finalLevel != spec.options.level ? "max_level" : "level")
+        .value_or(o)
+        .fail(Limits::exceeded("level " + std::to_string(finalLevel), tets, "Kuhn tetrahedra", ctx.limits.max_cells,
+                               "max-cells"));
   DegreeReductionResult r = reduceAlgebraic(spec.f, spec.box, spec.options);
   if (spec.exact_reference) ctx.scene.exact_surfaces.push_back(std::make_shared<AlgebraicSurface>(spec.f, spec.box));
   return std::move(r.primitives);

@@ -9,6 +9,7 @@
 #include "modeling/algebraic/bb_tetra.h"
 #include "modeling/algebraic/bernstein_roots.h"
 #include "modeling/algebraic/kuhn_mesh.h"
+#include "modeling/support/parallel_errors.h"
 
 namespace qacc {
 namespace {
@@ -88,14 +89,18 @@ LevelModel buildLevel(const Polynomial3& f, const Eigen::AlignedBox3d& box, int 
   std::vector<int> sign(T, 0);
   std::vector<BBTetra> own(T);
   const int n = f.degree();
+  ParallelErrors errors;
 #pragma omp parallel for schedule(static)
   for (long long ti = 0; ti < (long long)T; ++ti) {
-    const std::size_t t = std::size_t(ti);
-    BBTetra B = BBTetra::fromPolynomial(f, tetOf(m, t));
-    while (B.degree() < 2) B = B.elevated();
-    sign[t] = B.strictSign();
-    own[t] = n > 2 ? B.reducedTo(2) : B;
+    errors.run([&] {
+      const std::size_t t = std::size_t(ti);
+      BBTetra B = BBTetra::fromPolynomial(f, tetOf(m, t));
+      while (B.degree() < 2) B = B.elevated();
+      sign[t] = B.strictSign();
+      own[t] = n > 2 ? B.reducedTo(2) : B;
+    });
   }
+  errors.rethrow();
   // Shared coefficients: a vertex or an edge takes the value computed by the first
   // tetrahedron (in mesh order) that contains it, so all cells around it agree exactly.
   const double unset = std::numeric_limits<double>::quiet_NaN();
@@ -164,50 +169,54 @@ GeometricError measureError(const Polynomial3& f, const LevelModel& L, double sc
   double maxPS = 0, sumPS = 0, maxSP = 0, sumSP = 0;
   long long nPS = 0, nSP = 0;
   const long long T = (long long)m.tets.size();
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 64) reduction(max : maxPS, maxSP) reduction(+ : sumPS, sumSP, nPS, nSP)
   for (long long ti = 0; ti < T; ++ti) {
-    const std::size_t t = std::size_t(ti);
-    if (!L.kept[t]) continue;
-    const Tetrahedron v = tetOf(m, t);
-    const Quadric q = L.reduced[t].toBBQuadric().toQuadric();
-    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segs;
-    for (const auto& e : kEdges) segs.emplace_back(v[std::size_t(e[0])], v[std::size_t(e[1])]);
-    for (int e = 0; e < 3; ++e) {  // midpoints of opposite edges
-      const auto& a = kEdges[e];
-      const auto& b = kEdges[5 - e];
-      segs.emplace_back(0.5 * (v[std::size_t(a[0])] + v[std::size_t(a[1])]), 0.5 * (v[std::size_t(b[0])] + v[std::size_t(b[1])]));
-    }
-    for (int a = 0; a < 4; ++a) {  // vertex to the opposite face's centroid
-      Eigen::Vector3d c = Eigen::Vector3d::Zero();
-      for (int b = 0; b < 4; ++b)
-        if (b != a) c += v[std::size_t(b)] / 3.0;
-      segs.emplace_back(v[std::size_t(a)], c);
-    }
-    for (const auto& s : segs) {
-      const Eigen::Vector3d d = s.second - s.first;
-      const Eigen::Vector4d A = s.first.homogeneous();
-      const Eigen::Vector4d D(d.x(), d.y(), d.z(), 0.0);
-      double r[2];
-      const int nr = quadraticRoots01(A.dot(q.Q * A), 2 * D.dot(q.Q * A), D.dot(q.Q * D), r);
-      for (int k = 0; k < nr; ++k) {
-        const double dist = projectDistance(f, s.first + r[k] * d, scale);
-        if (std::isfinite(dist)) {
-          maxPS = std::max(maxPS, dist);
-          sumPS += dist;
-          ++nPS;
+    errors.run([&] {
+      const std::size_t t = std::size_t(ti);
+      if (!L.kept[t]) return;
+      const Tetrahedron v = tetOf(m, t);
+      const Quadric q = L.reduced[t].toBBQuadric().toQuadric();
+      std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segs;
+      for (const auto& e : kEdges) segs.emplace_back(v[std::size_t(e[0])], v[std::size_t(e[1])]);
+      for (int e = 0; e < 3; ++e) {  // midpoints of opposite edges
+        const auto& a = kEdges[e];
+        const auto& b = kEdges[5 - e];
+        segs.emplace_back(0.5 * (v[std::size_t(a[0])] + v[std::size_t(a[1])]), 0.5 * (v[std::size_t(b[0])] + v[std::size_t(b[1])]));
+      }
+      for (int a = 0; a < 4; ++a) {  // vertex to the opposite face's centroid
+        Eigen::Vector3d c = Eigen::Vector3d::Zero();
+        for (int b = 0; b < 4; ++b)
+          if (b != a) c += v[std::size_t(b)] / 3.0;
+        segs.emplace_back(v[std::size_t(a)], c);
+      }
+      for (const auto& s : segs) {
+        const Eigen::Vector3d d = s.second - s.first;
+        const Eigen::Vector4d A = s.first.homogeneous();
+        const Eigen::Vector4d D(d.x(), d.y(), d.z(), 0.0);
+        double r[2];
+        const int nr = quadraticRoots01(A.dot(q.Q * A), 2 * D.dot(q.Q * A), D.dot(q.Q * D), r);
+        for (int k = 0; k < nr; ++k) {
+          const double dist = projectDistance(f, s.first + r[k] * d, scale);
+          if (std::isfinite(dist)) {
+            maxPS = std::max(maxPS, dist);
+            sumPS += dist;
+            ++nPS;
+          }
+        }
+        for (double u : allBernsteinRoots(powerToBernstein(f.alongLine(s.first, d)))) {
+          const Eigen::Vector3d p = s.first + u * d;
+          const double g = q.gradient(p).norm();
+          if (!(g > 0)) continue;
+          const double dist = std::fabs(q.eval(p)) / g;
+          maxSP = std::max(maxSP, dist);
+          sumSP += dist;
+          ++nSP;
         }
       }
-      for (double u : allBernsteinRoots(powerToBernstein(f.alongLine(s.first, d)))) {
-        const Eigen::Vector3d p = s.first + u * d;
-        const double g = q.gradient(p).norm();
-        if (!(g > 0)) continue;
-        const double dist = std::fabs(q.eval(p)) / g;
-        maxSP = std::max(maxSP, dist);
-        sumSP += dist;
-        ++nSP;
-      }
-    }
+    });
   }
+  errors.rethrow();
   GeometricError e;
   e.max_piece_to_surface = maxPS;
   e.mean_piece_to_surface = nPS ? sumPS / double(nPS) : 0.0;

@@ -219,6 +219,7 @@ class Parser {
  public:
   Parser(const std::string& text, const std::map<std::string, double>& constants)
       : s_(text), constants_(constants) {}
+  static constexpr int kMaxDegree = Polynomial3::kMaxParsedDegree;
 
   Polynomial3 parse() {
     skip();
@@ -273,24 +274,56 @@ class Parser {
     for (;;) {
       if (peek('*')) {
         ++pos_;
-        p = p * factor();
+        p = times(p, factor());
       } else if (startsPrimary()) {
-        p = p * factor();  // implicit multiplication: "4 R^2 (x^2+y^2)", "2x"
+        p = times(p, factor());  // implicit multiplication: "4 R^2 (x^2+y^2)", "2x"
       } else {
         return p;
       }
     }
   }
 
+  // Every product is checked before it is expanded, on its degree and on the number of term
+  // products it costs: "(x+y+z)^64 (x+y+z)^64 ..." would otherwise grow without bound (a
+  // degree-d polynomial has up to (d+1)(d+2)(d+3)/6 terms; squaring 6545 terms costs 43 M).
+  Polynomial3 times(const Polynomial3& a, const Polynomial3& b) const {
+    if (a.degree() + b.degree() > kMaxDegree)
+      fail("the expanded degree exceeds " + std::to_string(kMaxDegree));
+    const double cost = double(a.terms().size()) * double(b.terms().size());
+    if (cost > double(Polynomial3::kMaxParsedTermProducts))
+      fail("expanding a product needs " + std::to_string((long long)cost) + " term products, above the supported " +
+           std::to_string(Polynomial3::kMaxParsedTermProducts));
+    return a * b;
+  }
+  Polynomial3 power(Polynomial3 b, int e) const {
+    Polynomial3 r = Polynomial3::constant(1.0);
+    while (e > 0) {
+      if (e & 1) r = times(r, b);
+      e >>= 1;
+      if (e) b = times(b, b);
+    }
+    return r;
+  }
+
   Polynomial3 factor() {
-    if (peek('-')) {
-      ++pos_;
-      return -factor();
+    // Unary signs are counted in a loop, not by recursion: a string of 40 000 '-' signs must
+    // not overflow the stack.
+    bool negative = false;
+    for (;;) {
+      if (peek('-')) {
+        ++pos_;
+        negative = !negative;
+      } else if (peek('+')) {
+        ++pos_;
+      } else {
+        break;
+      }
     }
-    if (peek('+')) {
-      ++pos_;
-      return factor();
-    }
+    Polynomial3 f = powerExpr();
+    return negative ? -f : f;
+  }
+
+  Polynomial3 powerExpr() {
     Polynomial3 b = primary();
     if (peek('^')) {
       ++pos_;
@@ -299,10 +332,11 @@ class Parser {
       while (pos_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[pos_]))) ++pos_;
       if (start == pos_) fail("expected a non-negative integer exponent after '^'");
       const std::string digits = s_.substr(start, pos_ - start);
-      if (digits.size() > 3 || std::stoi(digits) > 64) fail("exponent " + digits + " is too large (at most 64)");
+      if (digits.size() > 3 || std::stoi(digits) > kMaxDegree)
+        fail("exponent " + digits + " is too large (at most " + std::to_string(kMaxDegree) + ")");
       const int e = std::stoi(digits);
-      if (b.degree() * e > 64) fail("the expanded degree exceeds 64");
-      return b.pow(e);
+      if (b.degree() * e > kMaxDegree) fail("the expanded degree exceeds " + std::to_string(kMaxDegree));
+      return power(b, e);
     }
     return b;
   }

@@ -34,6 +34,11 @@ class Polynomial3 {
   static Polynomial3 monomial(int i, int j, int k, double a);
   // Affine form a·p + d.
   static Polynomial3 affine(const Eigen::Vector3d& a, double d);
+  // Parsed text never expands beyond this total degree (products and powers are checked
+  // before they are expanded), so a short text cannot expand into millions of terms.
+  static constexpr int kMaxParsedDegree = 64;
+  // ... nor multiplies more than this many pairs of terms in one product (about 0.3 s).
+  static constexpr long long kMaxParsedTermProducts = 4'000'000;
   // Throws PolynomialParseError with the position and the problem.
   static Polynomial3 parse(const std::string& text, const std::map<std::string, double>& constants = {});
 

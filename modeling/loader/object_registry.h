@@ -15,6 +15,7 @@
 #include "modeling/scene/json_node.h"
 #include "modeling/geometry/primitive.h"
 #include "modeling/scene/scene.h"
+#include "modeling/support/limits.h"
 
 namespace qacc {
 
@@ -25,6 +26,7 @@ struct ObjectContext {
   bool solid;                 // the object's "solid" flag
   bool has_material = false;  // true when the object named its "material" explicitly
   std::string note;           // the builder's one-line account of what it built (qacc info)
+  const Limits& limits;       // the work the scene may ask for (support/limits.h)
   std::string resolve(const std::string& path) const;  // relative → directory/path
 };
 

@@ -8,17 +8,22 @@
 
 #include "modeling/loader/object_registry.h"
 #include "modeling/scene/scene.h"
+#include "modeling/support/limits.h"
 
 namespace qacc {
 
 // Image size limits (documented in docs/SCENES.md).
 constexpr int kMaxImageSide = 16384;                          // width, height <= 16384
 constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;     // width * height <= 64 Mpixel
+// Perspective cameras: far / near <= 1e5 (depth precision of the window-space quadrics).
+constexpr double kMaxFarNearRatio = 1e5;
 
 // Reads and parses a scene file; relative paths inside it resolve against its directory.
-Scene loadScene(const std::string& path);
+// Input over `limits` is refused with the limit and the option that raises it.
+Scene loadScene(const std::string& path, const Limits& limits = Limits{});
 // Parses scene text; `file` names it in messages, `directory` resolves relative paths.
-Scene parseScene(const std::string& text, const std::string& file, const std::string& directory);
+Scene parseScene(const std::string& text, const std::string& file, const std::string& directory,
+                 const Limits& limits = Limits{});
 // Builds an object nested inside another one (a part of a `csg` object) as the loader builds a
 // top-level object: the type's builder, then its own `clip`, `transform`, `material` and
 // `solid`. The primitives are in the parent's local frame and belong to scene object

@@ -1,9 +1,11 @@
 #include "modeling/modelers/molecule.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -12,6 +14,7 @@
 #include <unordered_map>
 
 #include "modeling/geometry/natural_quadrics.h"
+#include "modeling/support/bounded_file.h"
 
 namespace qacc {
 namespace {
@@ -171,13 +174,14 @@ Molecule parsePdb(const std::string& text, const std::string& name) {
   return mol;
 }
 
-Molecule readPdb(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open PDB file: " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw std::runtime_error(path + ": cannot read PDB file");
-  return parsePdb(ss.str(), path);
+Molecule readPdb(const std::string& path, std::size_t max_bytes) {
+  std::string text;
+  try {
+    text = readFileBounded(path, max_bytes, "PDB file");
+  } catch (const FileReadError& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+  return parsePdb(text, path);
 }
 
 std::vector<std::pair<int, int>> inferBonds(const std::vector<Atom>& atoms) {
@@ -194,26 +198,38 @@ std::vector<std::pair<int, int>> inferBonds(const std::vector<Atom>& atoms) {
   const double cell = 2 * rmax + kBondTolerance;
   Eigen::Vector3d lo = atoms[0].position;
   for (const auto& a : atoms) lo = lo.cwiseMin(a.position);
+  // Cell indices are 64-bit (coordinates of 1e7 and more give indices beyond 32 bits: the
+  // former int cells and 21-bit packed key overflowed, undefined behaviour). A PDB coordinate
+  // has 8 columns, so |p - lo| < 2e100 and the index fits once it is below 2^62; above that,
+  // atoms that far apart are never bonded, and they share the last cell, which costs only
+  // distance tests. The key mixes the three indices with unsigned (wrapping) arithmetic:
+  // a collision only adds distance tests, never a wrong bond.
+  constexpr double kMaxIndex = 4.0e18;
   auto cellOf = [&](const Eigen::Vector3d& p) {
     const Eigen::Vector3d c = (p - lo) / cell;
-    return Eigen::Array3i(int(std::floor(c.x())), int(std::floor(c.y())), int(std::floor(c.z())));
+    std::array<long long, 3> r{};
+    for (int a = 0; a < 3; ++a) r[std::size_t(a)] = static_cast<long long>(std::min(std::floor(c[a]), kMaxIndex));
+    return r;
   };
-  auto key = [](int x, int y, int z) {
-    return (static_cast<long long>(x) * 2097152LL + y) * 2097152LL + z;  // 21 bits each
+  auto key = [](long long x, long long y, long long z) {
+    std::uint64_t h = static_cast<std::uint64_t>(x);
+    h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(y);
+    h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(z);
+    return h;
   };
-  std::unordered_map<long long, std::vector<int>> grid;
+  std::unordered_map<std::uint64_t, std::vector<int>> grid;
   grid.reserve(atoms.size());
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     const auto c = cellOf(atoms[i].position);
-    grid[key(c.x(), c.y(), c.z())].push_back(int(i));
+    grid[key(c[0], c[1], c[2])].push_back(int(i));
   }
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     const auto c = cellOf(atoms[i].position);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          if (c.x() + dx < 0 || c.y() + dy < 0 || c.z() + dz < 0) continue;
-          auto it = grid.find(key(c.x() + dx, c.y() + dy, c.z() + dz));
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          if (c[0] + dx < 0 || c[1] + dy < 0 || c[2] + dz < 0) continue;
+          auto it = grid.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
           if (it == grid.end()) continue;
           for (int j : it->second) {
             if (j <= int(i)) continue;
@@ -282,7 +298,7 @@ std::vector<Primitive> buildPdb(const JsonNode& o, ObjectContext& ctx) {
 
   Molecule mol;
   try {
-    mol = readPdb(ctx.resolve(path));
+    mol = readPdb(ctx.resolve(path), ctx.limits.max_input_bytes);
   } catch (const std::runtime_error& e) {
     fileNode.fail(e.what());
   }

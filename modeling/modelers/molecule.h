@@ -39,7 +39,7 @@ struct Molecule {
 };
 
 // Reads a PDB file (throws std::runtime_error "PATH:LINE: problem", or "PATH: problem").
-Molecule readPdb(const std::string& path);
+Molecule readPdb(const std::string& path, std::size_t max_bytes = Limits{}.max_input_bytes);
 // Parses PDB text (name used in messages). Bonds are inferred.
 Molecule parsePdb(const std::string& text, const std::string& name);
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "modeling/geometry/natural_quadrics.h"
+#include "modeling/support/bounded_file.h"
 
 namespace qacc {
 namespace {
@@ -78,13 +79,14 @@ TriangleMesh parseObj(const std::string& text, const std::string& name) {
   return mesh;
 }
 
-TriangleMesh readObj(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open OBJ file: " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw std::runtime_error(path + ": cannot read OBJ file");
-  return parseObj(ss.str(), path);
+TriangleMesh readObj(const std::string& path, std::size_t max_bytes) {
+  std::string text;
+  try {
+    text = readFileBounded(path, max_bytes, "OBJ file");
+  } catch (const FileReadError& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+  return parseObj(text, path);
 }
 
 std::vector<Primitive> meshPrimitives(const TriangleMesh& mesh, std::size_t* skipped) {
@@ -117,7 +119,7 @@ std::vector<Primitive> buildTriangleMesh(const JsonNode& o, ObjectContext& ctx) 
     const std::string path = file->string();
     if (path.empty()) file->fail("file name is empty");
     try {
-      mesh = readObj(ctx.resolve(path));
+      mesh = readObj(ctx.resolve(path), ctx.limits.max_input_bytes);
     } catch (const std::runtime_error& e) {
       file->fail(e.what());
     }

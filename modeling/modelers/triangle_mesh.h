@@ -21,7 +21,7 @@ struct TriangleMesh {
 
 // Reads an OBJ file. Throws std::runtime_error "PATH:LINE: problem" on bad content and
 // "PATH: problem" when the file cannot be read.
-TriangleMesh readObj(const std::string& path);
+TriangleMesh readObj(const std::string& path, std::size_t max_bytes = Limits{}.max_input_bytes);
 // Parses OBJ text; `name` is used in messages.
 TriangleMesh parseObj(const std::string& text, const std::string& name);
 

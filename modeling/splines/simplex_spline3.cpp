@@ -8,6 +8,7 @@
 
 #include "modeling/modelers/bb_quadric.h"
 #include "modeling/geometry/convex_polyhedron.h"
+#include "modeling/support/parallel_errors.h"
 
 namespace qacc {
 namespace {
@@ -549,9 +550,11 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decompose(bool cull, CellStats
   const std::size_t n = simplices_.size();
   std::vector<std::vector<Cell>> per(n);
   std::vector<CellStats> st(n);
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1)
   for (long long t = 0; t < (long long)n; ++t)
-    per[std::size_t(t)] = decomposeTet(std::size_t(t), cull, eps, st[std::size_t(t)]);
+    errors.run([&] { per[std::size_t(t)] = decomposeTet(std::size_t(t), cull, eps, st[std::size_t(t)]); });
+  errors.rethrow();
   std::vector<Cell> out;
   CellStats total;
   for (std::size_t t = 0; t < n; ++t) {

@@ -118,3 +118,22 @@ TEST(HwExtremes, ScaleRatioOfAMillion) {
   const AccuracyReport a = check(s, true, "scale ratio 1e6");
   EXPECT_EQ(a.pinholes, 0u);
 }
+
+// Issue 14: a specular weight above about 5e5 overflowed the 32-bit specular table (13 dB,
+// said nowhere) and light colours of 256 and more were clamped silently. Now the table
+// saturates and both are counted as shading overflows.
+TEST(HwExtremes, ShadingFormatsOverflowsAreCounted) {
+  Scene s = makeScene(120, 90, perspective({0, 0, 5}, {0, 0, 0}), {makeSphere({0, 0, 0}, 1.0)});
+  s.materials[0].specular = 1e6;
+  HwRender hw = renderHw(s, HwConfig(), 2);
+  EXPECT_GT(hw.stats.overflow.shading.events, 0u);
+  const FrameBuffer ref = renderReference(s, 2);
+  const AccuracyReport r = accuracyReport(ref, hw.fb, s.camera);
+  EXPECT_GT(r.psnr_db, 30.0) << r.line();
+  s.materials[0].specular = 0.2;
+  hw = renderHw(s, HwConfig(), 2);
+  EXPECT_EQ(hw.stats.overflow.shading.events, 0u);
+  s.lights[0].color = {300, 300, 300};
+  hw = renderHw(s, HwConfig(), 2);
+  EXPECT_GT(hw.stats.overflow.shading.events, 0u) << "a light colour above 256 was clamped silently";
+}

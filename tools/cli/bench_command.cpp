@@ -33,6 +33,7 @@
 #include "raster/reference/reference_renderer.h"
 #include "tools/cli/commands.h"
 #include "tools/engines/image_size.h"
+#include "tools/cli/limit_options.h"
 
 namespace qacc {
 
@@ -45,6 +46,7 @@ struct BenchArgs {
   std::vector<int> threads;
   int repeat = 3;
   bool cycle = true;
+  Limits limits;
   std::string out;   // OUT.json and OUT.csv, one row per scene and thread count
   std::string json;
 };
@@ -145,7 +147,7 @@ void runBench(const BenchArgs& a) {
               "frame ms");
   std::vector<BenchRun> runs;
   for (const std::string& path : scenes) {
-    Scene scene = loadScene(path);
+    Scene scene = loadScene(path, a.limits);
     applyImageSize(scene, a.width, a.height);
     for (int t : threads) {
       const BenchRun b = benchOne(scene, cfg, t, a.repeat, a.cycle);
@@ -222,6 +224,7 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_flag("!--no-cycle", args->cycle, "Skip the hw-cycle run");
   cmd->add_option("--json", args->json, "Also write the results as JSON (with the machine)");
   cmd->add_option("--out", args->out, "Write the table as OUT.json and OUT.csv");
+  addLimitOptions(cmd, args->limits);
   cmd->callback([args] { runBench(*args); });
 }
 

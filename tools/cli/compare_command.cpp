@@ -22,6 +22,7 @@
 #include <memory>
 
 #include "tools/cli/commands.h"
+#include "tools/cli/limit_options.h"
 #include "tools/compare/compare.h"
 
 namespace qacc {
@@ -38,6 +39,7 @@ void addCompareCommand(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--width", o->width, "Image width (with --height)");
   cmd->add_option("--height", o->height, "Image height (with --width)");
+  addLimitOptions(cmd, o->limits);
   cmd->add_flag("--no-facet-cycles", o->no_facet_cycles, "Skip the facet-path cycle runs on the accelerator");
   cmd->callback([o] { compare::runCompare(*o); });
 }

@@ -11,6 +11,7 @@
 #include "raster/pixel/window_primitive.h"
 #include "raster/reference/csg_hit.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/limit_options.h"
 
 namespace qacc {
 
@@ -50,12 +51,14 @@ void printCsgInfo(const Scene& s) {
 void addInfoCommand(CLI::App& app) {
   auto path = std::make_shared<std::string>();
   auto perPrimitive = std::make_shared<bool>(false);
+  auto limits = std::make_shared<Limits>();
   CLI::App* cmd = app.add_subcommand("info", "Describe a scene: primitives, quadric types, clip planes, bounds");
   cmd->add_option("scene", *path, "Scene file")->required();
   cmd->add_flag("--primitives", *perPrimitive,
                 "Also list every primitive: object, quadric type, planes, solid, world bounds of its clipped piece");
-  cmd->callback([path, perPrimitive] {
-    const Scene s = loadScene(*path);
+  addLimitOptions(cmd, *limits);
+  cmd->callback([path, perPrimitive, limits] {
+    const Scene s = loadScene(*path, *limits);
     std::printf("scene %s (%s)\n", s.name.c_str(), path->c_str());
     std::printf("image %dx%d, %s camera, %zu lights, %zu materials\n", s.width, s.height,
                 s.camera.type == Camera::Type::Perspective ? "perspective" : "orthographic", s.lights.size(),

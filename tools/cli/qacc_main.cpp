@@ -19,7 +19,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help (and CLI11's other "successes") print as CLI11 wants; every command-line error is
+    // one "qacc: error:" line and exit status 1, like every other error.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::fprintf(stderr, "qacc: error: %s (see qacc --help)\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "qacc: error: %s\n", e.what());
     return 1;

@@ -19,6 +19,8 @@
 #include "hw_model/report/stats_file.h"
 #include "raster/metrics/psnr.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/limit_options.h"
+#include "modeling/support/bounded_file.h"
 #include "tools/engines/engine.h"
 
 namespace qacc {
@@ -31,6 +33,7 @@ struct ReduceArgs {
   std::string engine = "reference";
   int threads = 0;
   std::string out;  // results: OUT.json and OUT.csv (one row per object and level)
+  Limits limits;
 };
 
 std::vector<int> parseLevels(const std::string& s) {
@@ -68,18 +71,20 @@ int closedPinholes(const FrameBuffer& fb) {
 }
 
 void runReduce(const ReduceArgs& a) {
-  std::ifstream in(a.scene);
-  if (!in) throw std::runtime_error("cannot open " + a.scene);
-  std::stringstream buf;
-  buf << in.rdbuf();
-  const std::string text = buf.str();
-  const nlohmann::json doc = nlohmann::json::parse(text);
+  std::string text;
+  try {
+    text = readFileBounded(a.scene, a.limits.max_input_bytes, "scene file");
+  } catch (const FileReadError& e) {
+    throw SceneError(a.scene, "/", e.what());
+  }
   std::string dir = a.scene;
   const auto slash = dir.find_last_of('/');
   dir = slash == std::string::npos ? "." : dir.substr(0, slash);
   const std::vector<int> levels = parseLevels(a.levels);
 
-  const Scene truthScene = parseScene(text, a.scene, dir);
+  // The strict loader first, so that bad scenes get its messages; then the raw JSON to patch.
+  const Scene truthScene = parseScene(text, a.scene, dir, a.limits);
+  const nlohmann::json doc = nlohmann::json::parse(text);
   EngineOptions eo;
   eo.threads = a.threads;
   eo.report_accuracy = false;
@@ -107,7 +112,7 @@ void runReduce(const ReduceArgs& a) {
       nlohmann::json patched = doc;
       patched["objects"][oi]["level"] = L;
       patched["objects"][oi].erase("refine_error");
-      Scene pieces = parseScene(patched.dump(), a.scene, dir);
+      Scene pieces = parseScene(patched.dump(), a.scene, dir, a.limits);
       for (auto& so : pieces.objects) so.exact_surface = -1;  // draw the pieces
       const FrameBuffer fb = runEngine(a.engine, pieces, eo).fb;
       const CoverageError ce = coverageError(truth, fb);
@@ -162,6 +167,7 @@ void addReduceCommand(CLI::App& app) {
   cmd->add_option("--engine", args->engine, "Renderer of the pieces: reference|hw|hw-cycle");
   cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--out", args->out, "Write the table as OUT.json and OUT.csv");
+  addLimitOptions(cmd, args->limits);
   cmd->callback([args] { runReduce(*args); });
 }
 

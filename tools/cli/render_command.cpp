@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "tools/cli/commands.h"
+#include "tools/cli/limit_options.h"
 #include "tools/engines/render_job.h"
 
 namespace qacc {
@@ -23,11 +24,13 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--depth", job->depth_path, "PFM of window depth (+inf where nothing was hit)");
   cmd->add_option("--stats", job->options.stats_path, "Accelerator statistics JSON (CSV alongside)");
   cmd->add_option("--config", job->options.config_path, "Accelerator configuration JSON");
-  cmd->add_option("--level", job->options.level, "Tessellation level (facets engine)");
+  cmd->add_option("--level", job->options.level, "Tessellation level (facets engine; 2 or more)")
+      ->check(CLI::Range(2, 1000000));
   cmd->add_option("--shading", job->options.shading, "Facet shading: gouraud|pixel (facets engine)");
   cmd->add_flag("!--no-accuracy", job->options.report_accuracy,
                 "hw engines: skip the accuracy line (no reference render)");
   cmd->add_option("--threads", job->options.threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+  addLimitOptions(cmd, job->options.limits);
   cmd->callback([job] {
     const RenderJobResult r = runRenderJob(*job);
     const Scene& s = r.scene;

@@ -37,7 +37,7 @@ std::vector<int> parseLevels(const std::string& s) {
 
 ComparePlan planCompare(const CompareOptions& o) {
   ComparePlan p;
-  p.scene = loadScene(o.scene_path);
+  p.scene = loadScene(o.scene_path, o.limits);
   requireCsgSupport("facets", p.scene);  // the facets half cannot draw CSG yet
   applyImageSize(p.scene, o.width, o.height);
   p.levels = parseLevels(o.levels);

@@ -2,6 +2,7 @@
 // size, the tessellation levels, the facet shading and the accelerator configuration.
 // Everything the options can get wrong is refused here, before any rendering.
 #pragma once
+#include "modeling/support/limits.h"
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@ struct CompareOptions {
   int width = 0, height = 0;
   bool no_facet_cycles = false;
   std::size_t max_cycle_triangles = 1000000;  // facet-path cycle runs above this are skipped
+  Limits limits;  // loading and tessellation bounds (--max-*)
 };
 
 struct ComparePlan {

@@ -19,7 +19,7 @@ FacetRuns renderFacetLevels(const ComparePlan& plan, const CompareOptions& o, co
     r.level = level;
     TriangleMesh3 mesh;
     const auto t0 = Clock::now();
-    FacetRun run = renderFacetScene(scene, level, plan.shading, o.threads, &mesh);
+    FacetRun run = renderFacetScene(scene, level, plan.shading, o.threads, o.limits.max_triangles, &mesh);
     r.host_ms = msSince(t0);
     r.draw_ms = run.render.draw_ms;
     r.gl_ms = run.render.totalMs();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "modeling/scene/scene.h"
+#include "modeling/support/limits.h"
 #include "raster/image/frame_buffer.h"
 
 namespace qacc {
@@ -17,6 +18,7 @@ struct EngineOptions {
   int level = 0;            // tessellation level (facets)
   std::string shading;      // facet shading mode (facets)
   bool report_accuracy = true;  // hw, hw-cycle, facets: compare with the reference after rendering
+  Limits limits;            // loading and tessellation bounds (--max-*)
 };
 
 struct EngineResult {

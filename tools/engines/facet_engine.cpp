@@ -6,9 +6,15 @@
 
 namespace qacc {
 
-FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, int threads, TriangleMesh3* meshOut) {
+FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, int threads, std::size_t max_triangles,
+                          TriangleMesh3* meshOut) {
   if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
   if (level < 2) throw std::invalid_argument("facets: --level must be at least 2 (triangles per primitive)");
+  const std::size_t estimate = scene.primitives.size() * std::size_t(level);
+  if (estimate > max_triangles)
+    throw std::invalid_argument(Limits::exceeded("facets: level " + std::to_string(level) + " for " +
+                                                     std::to_string(scene.primitives.size()) + " primitives",
+                                                 estimate, "triangles", max_triangles, "max-triangles"));
   FacetRun run;
   const auto t0 = std::chrono::steady_clock::now();
   TessellationOptions to;
@@ -32,7 +38,8 @@ FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, i
 bool runFacetEngine(const std::string& engine, const Scene& scene, const EngineOptions& options, EngineResult& out) {
   if (engine != "facets") return false;
   const int level = options.level > 0 ? options.level : kDefaultFacetLevel;
-  FacetRun run = renderFacetScene(scene, level, parseFacetShading(options.shading), options.threads);
+  FacetRun run = renderFacetScene(scene, level, parseFacetShading(options.shading), options.threads,
+                                  options.limits.max_triangles);
   out.fb = std::move(run.render.fb);
   out.host_ms = run.tessellate_ms + run.render.totalMs();
   const TessellationReport& t = run.tessellation;

@@ -22,6 +22,9 @@ struct FacetRun {
 // Renders with the facet engine if `engine` is "facets" (returns false otherwise).
 bool runFacetEngine(const std::string& engine, const Scene& scene, const EngineOptions& options, EngineResult& out);
 // The same with everything it measured (for compare). Also returns the triangles.
-FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, int threads, TriangleMesh3* mesh = nullptr);
+// Refuses (std::invalid_argument) a tessellation whose surface triangles, primitives x level,
+// exceed `max_triangles` (caps come on top), before building it.
+FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, int threads, std::size_t max_triangles,
+                          TriangleMesh3* mesh = nullptr);
 
 }  // namespace qacc
