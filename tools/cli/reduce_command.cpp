@@ -19,6 +19,7 @@
 #include "hw_model/report/stats_file.h"
 #include "raster/metrics/psnr.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/int_list_option.h"
 #include "tools/cli/limit_options.h"
 #include "modeling/support/bounded_file.h"
 #include "tools/engines/engine.h"
@@ -36,25 +37,7 @@ struct ReduceArgs {
   Limits limits;
 };
 
-std::vector<int> parseLevels(const std::string& s) {
-  std::vector<int> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    std::size_t pos = 0;
-    int v = 0;
-    try {
-      v = std::stoi(item, &pos);
-    } catch (...) {
-      pos = 0;
-    }
-    if (item.empty() || pos != item.size() || v < 1 || v > 256)
-      throw std::invalid_argument("--levels: '" + item + "' is not a level (an integer from 1 to 256)");
-    out.push_back(v);
-  }
-  if (out.empty()) throw std::invalid_argument("--levels: no level given");
-  return out;
-}
+std::vector<int> parseLevels(const std::string& s) { return parseIntListOption(s, "--levels", "a level", 1, 256); }
 
 // Background pixels whose 8 neighbours are all covered.
 int closedPinholes(const FrameBuffer& fb) {

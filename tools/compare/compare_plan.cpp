@@ -7,29 +7,14 @@
 
 #include "modeling/loader/scene_loader.h"
 #include "raster/osmesa/osmesa_renderer.h"
+#include "tools/cli/int_list_option.h"
 #include "tools/engines/engine.h"
 #include "tools/engines/image_size.h"
 
 namespace qacc::compare {
 
 std::vector<int> parseLevels(const std::string& s) {
-  std::vector<int> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    if (item.empty()) continue;
-    std::size_t pos = 0;
-    int v = 0;
-    try {
-      v = std::stoi(item, &pos);
-    } catch (...) {
-      pos = 0;
-    }
-    if (pos != item.size() || v < 2 || v > 1000000)
-      throw std::invalid_argument("--levels: '" + item + "' is not a level (an integer from 2 to 1000000)");
-    out.push_back(v);
-  }
-  if (out.empty()) throw std::invalid_argument("--levels: no level given");
+  std::vector<int> out = parseIntListOption(s, "--levels", "a level", 2, 1000000);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
