@@ -331,17 +331,22 @@ Scene parseScene(const std::string& text, const std::string& file, const std::st
   return scene;
 }
 
-Scene loadScene(const std::string& path, const Limits& limits) {
-  std::string text;
+std::string readSceneText(const std::string& path, const Limits& limits) {
   try {
-    text = readFileBounded(path, limits.max_input_bytes, "scene file");
+    return readFileBounded(path, limits.max_input_bytes, "scene file");
   } catch (const FileReadError& e) {
     throw SceneError(path, "/", e.what());
   }
-  std::string directory = ".";
+}
+
+std::string sceneDirectory(const std::string& path) {
   const auto slash = path.find_last_of('/');
-  if (slash != std::string::npos) directory = slash == 0 ? "/" : path.substr(0, slash);
-  return parseScene(text, path, directory, limits);
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+Scene loadScene(const std::string& path, const Limits& limits) {
+  return parseScene(readSceneText(path, limits), path, sceneDirectory(path), limits);
 }
 
 }  // namespace qacc

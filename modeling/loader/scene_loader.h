@@ -21,6 +21,10 @@ constexpr double kMaxFarNearRatio = 1e5;
 // Reads and parses a scene file; relative paths inside it resolve against its directory.
 // Input over `limits` is refused with the limit and the option that raises it.
 Scene loadScene(const std::string& path, const Limits& limits = Limits{});
+// The text of a scene file, read with the input bound (SceneError naming the file when it
+// cannot be read), and the directory its relative paths resolve against.
+std::string readSceneText(const std::string& path, const Limits& limits = Limits{});
+std::string sceneDirectory(const std::string& path);
 // Parses scene text; `file` names it in messages, `directory` resolves relative paths.
 Scene parseScene(const std::string& text, const std::string& file, const std::string& directory,
                  const Limits& limits = Limits{});

@@ -175,13 +175,7 @@ Molecule parsePdb(const std::string& text, const std::string& name) {
 }
 
 Molecule readPdb(const std::string& path, std::size_t max_bytes) {
-  std::string text;
-  try {
-    text = readFileBounded(path, max_bytes, "PDB file");
-  } catch (const FileReadError& e) {
-    throw std::runtime_error(path + ": " + e.what());
-  }
-  return parsePdb(text, path);
+  return parsePdb(readModelFile(path, max_bytes, "PDB file"), path);
 }
 
 std::vector<std::pair<int, int>> inferBonds(const std::vector<Atom>& atoms) {

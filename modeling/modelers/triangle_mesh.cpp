@@ -80,13 +80,7 @@ TriangleMesh parseObj(const std::string& text, const std::string& name) {
 }
 
 TriangleMesh readObj(const std::string& path, std::size_t max_bytes) {
-  std::string text;
-  try {
-    text = readFileBounded(path, max_bytes, "OBJ file");
-  } catch (const FileReadError& e) {
-    throw std::runtime_error(path + ": " + e.what());
-  }
-  return parseObj(text, path);
+  return parseObj(readModelFile(path, max_bytes, "OBJ file"), path);
 }
 
 std::vector<Primitive> meshPrimitives(const TriangleMesh& mesh, std::size_t* skipped) {

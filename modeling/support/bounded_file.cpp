@@ -43,4 +43,12 @@ std::string readFileBounded(const std::string& path, std::size_t max_bytes, cons
   return text;
 }
 
+std::string readModelFile(const std::string& path, std::size_t max_bytes, const std::string& kind) {
+  try {
+    return readFileBounded(path, max_bytes, kind);
+  } catch (const FileReadError& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+}
+
 }  // namespace qacc

@@ -16,5 +16,7 @@ struct FileReadError : std::runtime_error {
 // KIND: <reason>", "KIND is a directory", "KIND is larger than N bytes (raise the limit with
 // --max-input-mb)", "cannot read KIND: <reason>".
 std::string readFileBounded(const std::string& path, std::size_t max_bytes, const std::string& kind);
+// The same for a file a modeler reads (PDB, OBJ): std::runtime_error "PATH: <reason>".
+std::string readModelFile(const std::string& path, std::size_t max_bytes, const std::string& kind);
 
 }  // namespace qacc

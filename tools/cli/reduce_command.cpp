@@ -21,7 +21,6 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/int_list_option.h"
 #include "tools/cli/limit_options.h"
-#include "modeling/support/bounded_file.h"
 #include "tools/engines/engine.h"
 
 namespace qacc {
@@ -54,15 +53,8 @@ int closedPinholes(const FrameBuffer& fb) {
 }
 
 void runReduce(const ReduceArgs& a) {
-  std::string text;
-  try {
-    text = readFileBounded(a.scene, a.limits.max_input_bytes, "scene file");
-  } catch (const FileReadError& e) {
-    throw SceneError(a.scene, "/", e.what());
-  }
-  std::string dir = a.scene;
-  const auto slash = dir.find_last_of('/');
-  dir = slash == std::string::npos ? "." : dir.substr(0, slash);
+  const std::string text = readSceneText(a.scene, a.limits);
+  const std::string dir = sceneDirectory(a.scene);
   const std::vector<int> levels = parseLevels(a.levels);
 
   // The strict loader first, so that bad scenes get its messages; then the raw JSON to patch.
