@@ -58,26 +58,32 @@ void dt1d(const double* f, int n, double* d, std::vector<int>& v, std::vector<do
 
 }  // namespace
 
-std::vector<double> squaredDistanceTransform(const std::vector<std::uint8_t>& mask, int width, int height) {
+std::vector<std::uint32_t> squaredDistanceTransform(const std::vector<std::uint8_t>& mask, int width, int height) {
   const std::size_t n = std::size_t(width) * std::size_t(height);
-  std::vector<double> out(n, kInf);
+  std::vector<std::uint32_t> out(n, kNoFeature);
   if (n == 0) return out;
-  for (std::size_t i = 0; i < n; ++i) out[i] = mask[i] ? 0.0 : kInf;
-  std::vector<int> v;
-  std::vector<double> z;
-  std::vector<double> col(static_cast<std::size_t>(height)), res(static_cast<std::size_t>(std::max(width, height)));
-  // Columns first, then rows.
-  for (int x = 0; x < width; ++x) {
-    for (int y = 0; y < height; ++y) col[std::size_t(y)] = out[std::size_t(y) * width + x];
-    dt1d(col.data(), height, res.data(), v, z);
-    for (int y = 0; y < height; ++y) out[std::size_t(y) * width + x] = res[std::size_t(y)];
-  }
-  std::vector<double> row(static_cast<std::size_t>(width));
-  for (int y = 0; y < height; ++y) {
-    std::copy(out.begin() + std::ptrdiff_t(std::size_t(y) * width),
-              out.begin() + std::ptrdiff_t(std::size_t(y) * width + width), row.begin());
-    dt1d(row.data(), width, res.data(), v, z);
-    std::copy(res.begin(), res.begin() + width, out.begin() + std::ptrdiff_t(std::size_t(y) * width));
+  const auto toDouble = [](std::uint32_t v) { return v == kNoFeature ? kInf : double(v); };
+  const auto toInt = [](double v) { return v == kInf ? kNoFeature : std::uint32_t(v); };
+  // Columns first, then rows; every line is independent (same result for any thread count).
+#pragma omp parallel
+  {
+    std::vector<int> v;
+    std::vector<double> z;
+    std::vector<double> line(static_cast<std::size_t>(std::max(width, height))),
+        res(static_cast<std::size_t>(std::max(width, height)));
+#pragma omp for schedule(static)
+    for (int x = 0; x < width; ++x) {
+      for (int y = 0; y < height; ++y) line[std::size_t(y)] = mask[std::size_t(y) * width + x] ? 0.0 : kInf;
+      dt1d(line.data(), height, res.data(), v, z);
+      for (int y = 0; y < height; ++y) out[std::size_t(y) * width + x] = toInt(res[std::size_t(y)]);
+    }
+#pragma omp for schedule(static)
+    for (int y = 0; y < height; ++y) {
+      std::uint32_t* r = out.data() + std::size_t(y) * width;
+      for (int x = 0; x < width; ++x) line[std::size_t(x)] = toDouble(r[x]);
+      dt1d(line.data(), width, res.data(), v, z);
+      for (int x = 0; x < width; ++x) r[x] = toInt(res[std::size_t(x)]);
+    }
   }
   return out;
 }

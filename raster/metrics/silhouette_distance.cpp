@@ -30,6 +30,11 @@ void checkSizes(const FrameBuffer& a, const FrameBuffer& b) {
     throw std::invalid_argument("silhouetteDistance: frame buffers differ in size");
 }
 
+// Distance in pixels from a squared distance transform's value.
+double distance(std::uint32_t squared) {
+  return squared == kNoFeature ? std::numeric_limits<double>::infinity() : std::sqrt(double(squared));
+}
+
 }  // namespace
 
 SilhouetteDistance silhouetteDistance(const FrameBuffer& reference, const FrameBuffer& test, double tolerance) {
@@ -37,27 +42,27 @@ SilhouetteDistance silhouetteDistance(const FrameBuffer& reference, const FrameB
   const int w = reference.width, h = reference.height;
   const auto ma = boundaryMask(reference.object, w, h);
   const auto mb = boundaryMask(test.object, w, h);
-  const auto da = squaredDistanceTransform(ma, w, h);  // distance to the reference boundary
-  const auto db = squaredDistanceTransform(mb, w, h);  // distance to the test boundary
   SilhouetteDistance s;
   s.tolerance = tolerance;
-  double maxd = 0, sum = 0;
+  double maxd = 0, sumRef = 0, sumTest = 0;
   std::size_t within = 0;
-  for (std::size_t i = 0; i < ma.size(); ++i) {
-    if (ma[i]) {
-      ++s.reference_boundary;
-      const double d = std::sqrt(db[i]);
-      maxd = std::max(maxd, d);
-      sum += d;
-      if (d <= tolerance) ++within;
-    }
-    if (mb[i]) {
-      ++s.test_boundary;
-      const double d = std::sqrt(da[i]);
-      maxd = std::max(maxd, d);
-      sum += d;
-    }
-  }
+  // Distances from the boundary pixels of `from` to the boundary of `to`, one distance
+  // transform alive at a time.
+  const auto measure = [&](const std::vector<std::uint8_t>& from, const std::vector<std::uint8_t>& to,
+                           std::size_t& count, double& sum, std::size_t* withinTolerance) {
+    const auto dt = squaredDistanceTransform(to, w, h);
+    for (std::size_t i = 0; i < from.size(); ++i)
+      if (from[i]) {
+        ++count;
+        const double d = distance(dt[i]);
+        maxd = std::max(maxd, d);
+        sum += d;
+        if (withinTolerance && d <= tolerance) ++*withinTolerance;
+      }
+  };
+  measure(ma, mb, s.reference_boundary, sumRef, &within);
+  measure(mb, ma, s.test_boundary, sumTest, nullptr);
+  const double sum = sumRef + sumTest;
   const std::size_t n = s.reference_boundary + s.test_boundary;
   if (n == 0) return s;  // neither has a boundary: identical silhouettes
   if (s.reference_boundary == 0 || s.test_boundary == 0) {
@@ -81,8 +86,8 @@ ImageF silhouetteDistanceMap(const FrameBuffer& reference, const FrameBuffer& te
   ImageF out(w, h, 1, 0.0f);
   for (std::size_t i = 0; i < ma.size(); ++i) {
     double d = 0;
-    if (ma[i]) d = std::max(d, std::sqrt(db[i]));
-    if (mb[i]) d = std::max(d, std::sqrt(da[i]));
+    if (ma[i]) d = std::max(d, distance(db[i]));
+    if (mb[i]) d = std::max(d, distance(da[i]));
     out.data[i] = float(d);
   }
   return out;

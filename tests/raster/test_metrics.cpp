@@ -5,6 +5,8 @@
 #include <limits>
 #include <random>
 
+#include <omp.h>
+
 #include "raster/metrics/coverage_error.h"
 #include "raster/metrics/depth_error.h"
 #include "raster/metrics/distance_transform.h"
@@ -99,6 +101,82 @@ TEST(Ssim, SingleWindowByHand) {
   EXPECT_LT(expected, 0.0);  // anti-correlated structure
 }
 
+// SSIM and the distance transform run in parallel bands and lines: the same result for
+// any thread count, and the mean without the map equals the map's mean.
+TEST(Ssim, SameForAnyThreadCountAndWithoutTheMap) {
+  std::mt19937 rng(5);
+  Image8 a(301, 203, 3), b(301, 203, 3);
+  for (auto& v : a.data) v = std::uint8_t(rng() % 256);
+  for (std::size_t i = 0; i < b.data.size(); ++i) b.data[i] = std::uint8_t((a.data[i] + rng() % 40) % 256);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const SsimResult one = ssimMap(a, b);
+  const double oneMean = ssim(a, b);
+  std::vector<std::uint32_t> dt1;
+  std::vector<std::uint8_t> mask(a.pixels());
+  for (std::size_t i = 0; i < mask.size(); ++i) mask[i] = a.data[3 * i] < 3;
+  dt1 = squaredDistanceTransform(mask, a.width, a.height);
+  omp_set_num_threads(3);
+  const SsimResult three = ssimMap(a, b);
+  const double threeMean = ssim(a, b);
+  const auto dt3 = squaredDistanceTransform(mask, a.width, a.height);
+  omp_set_num_threads(saved);
+  EXPECT_EQ(one.mean, three.mean);
+  EXPECT_EQ(one.mean, oneMean);
+  EXPECT_EQ(threeMean, oneMean);
+  EXPECT_EQ(one.map.data, three.map.data);
+  EXPECT_EQ(dt1, dt3);
+  EXPECT_LT(one.mean, 0.99);
+}
+
+// The banded, vectorised filtering gives the same bits as the direct per-pixel separable
+// sums (taps in ascending order, skipped outside the image) for every pixel of the map.
+TEST(Ssim, MapEqualsTheDirectSeparableSums) {
+  std::mt19937 rng(9);
+  for (const auto& [w, h] : {std::pair{67, 45}, std::pair{9, 7}}) {
+    Image8 a(w, h, 3), b(w, h, 3);
+    for (auto& v : a.data) v = std::uint8_t(rng() % 256);
+    for (std::size_t i = 0; i < b.data.size(); ++i) b.data[i] = std::uint8_t((a.data[i] * 3 + rng() % 60) % 256);
+    const ImageF ya = luma(a), yb = luma(b);
+    const int R = 5;
+    std::vector<double> k(2 * R + 1);
+    double ksum = 0;
+    for (int i = -R; i <= R; ++i) ksum += (k[std::size_t(i + R)] = std::exp(-double(i * i) / (2 * 1.5 * 1.5)));
+    for (double& v : k) v /= ksum;
+    const bool vx = w >= 2 * R + 1, vy = h >= 2 * R + 1;
+    const int x0 = vx ? R : 0, x1 = vx ? w - R : w, y0 = vy ? R : 0, y1 = vy ? h - R : h;
+    std::vector<double> hx[5];
+    for (auto& v : hx) v.assign(std::size_t(w) * h, 0.0);
+    for (int y = 0; y < h; ++y)
+      for (int x = x0; x < x1; ++x) {
+        double s[5] = {0, 0, 0, 0, 0}, ws = 0;
+        for (int d = -R; d <= R; ++d) {
+          if (x + d < 0 || x + d >= w) continue;
+          const double wt = k[std::size_t(d + R)], p = ya.at(x + d, y), q = yb.at(x + d, y);
+          s[0] += wt * p; s[1] += wt * q; s[2] += wt * p * p; s[3] += wt * q * q; s[4] += wt * p * q;
+          ws += wt;
+        }
+        for (int m = 0; m < 5; ++m) hx[m][std::size_t(y) * w + x] = s[m] / ws;
+      }
+    const SsimResult r = ssimMap(a, b);
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        double s[5] = {0, 0, 0, 0, 0}, ws = 0;
+        for (int d = -R; d <= R; ++d) {
+          if (y + d < 0 || y + d >= h) continue;
+          const double wt = k[std::size_t(d + R)];
+          for (int m = 0; m < 5; ++m) s[m] += wt * hx[m][std::size_t(y + d) * w + x];
+          ws += wt;
+        }
+        for (double& v : s) v /= ws;
+        const double C1 = 6.5025, C2 = 58.5225, mx = s[0], my = s[1];
+        const double v = ((2 * mx * my + C1) * (2 * (s[4] - mx * my) + C2)) /
+                         ((mx * mx + my * my + C1) * ((s[2] - mx * mx) + (s[3] - my * my) + C2));
+        ASSERT_EQ(r.map.at(x, y), float(v)) << w << "x" << h << " at " << x << "," << y;
+      }
+  }
+}
+
 TEST(DistanceTransform, MatchesBruteForce) {
   std::mt19937 rng(3);
   const int w = 23, h = 17;
@@ -112,10 +190,10 @@ TEST(DistanceTransform, MatchesBruteForce) {
       for (int v = 0; v < h; ++v)
         for (int u = 0; u < w; ++u)
           if (m[std::size_t(v) * w + u]) best = std::min(best, double((x - u) * (x - u) + (y - v) * (y - v)));
-      ASSERT_EQ(d[std::size_t(y) * w + x], best) << x << "," << y;
+      ASSERT_EQ(double(d[std::size_t(y) * w + x]), best) << x << "," << y;
     }
   const auto e = squaredDistanceTransform(std::vector<std::uint8_t>(6, 0), 3, 2);
-  EXPECT_TRUE(std::isinf(e[0]));
+  EXPECT_EQ(e[0], kNoFeature);
 }
 
 TEST(SilhouetteDistance, IdenticalIsZero) {

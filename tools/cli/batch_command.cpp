@@ -1,4 +1,5 @@
 // qacc batch SCENE... --out DIR [--engine E] [--threads N] [--width W --height H] [--no-accuracy]
+//            [--cache DIR | --no-cache]
 // Renders every scene into DIR/<scene file name>.png and prints a table (hw engines: each
 // row followed by its accuracy line against the reference, unless --no-accuracy). A scene
 // that cannot be rendered prints "qacc: error: ..." and the batch goes on with the next
@@ -11,6 +12,7 @@
 #include "tools/cli/commands.h"
 #include "tools/engines/image_size.h"
 #include "tools/cli/limit_options.h"
+#include "tools/cli/reference_cache_options.h"
 #include "tools/engines/render_job.h"
 
 namespace qacc {
@@ -22,6 +24,8 @@ struct BatchArgs {
   std::string engine = "reference";
   int threads = 0, width = 0, height = 0;
   bool accuracy = true;
+  bool use_cache = true;
+  std::string cache_dir;
   Limits limits;
 };
 }  // namespace
@@ -36,6 +40,7 @@ void addBatchCommand(CLI::App& app) {
   cmd->add_option("--width", args->width, "Image width override");
   cmd->add_option("--height", args->height, "Image height override");
   cmd->add_flag("!--no-accuracy", args->accuracy, "hw engines: skip the accuracy line (no reference render)");
+  addReferenceCacheOptions(cmd, args->use_cache, args->cache_dir);
   addLimitOptions(cmd, args->limits);
   cmd->callback([args] {
     checkImageSize(args->width, args->height);
@@ -52,6 +57,8 @@ void addBatchCommand(CLI::App& app) {
       job.options.threads = args->threads;
       job.options.report_accuracy = args->accuracy;
       job.options.limits = args->limits;
+      job.use_cache = args->use_cache;
+      job.cache_dir = args->cache_dir;
       job.color_path = (std::filesystem::path(args->out) / std::filesystem::path(path).stem()).string() + ".png";
       RenderJobResult r;
       try {

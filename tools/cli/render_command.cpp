@@ -1,11 +1,12 @@
 // qacc render SCENE -o out.png [--engine ...] [--width W --height H] [--ids ids.png]
 //             [--depth depth.pfm] [--stats stats.json] [--config hw.json] [--level N]
-//             [--threads N] [--no-accuracy]
+//             [--threads N] [--no-accuracy] [--cache DIR | --no-cache]
 #include <cstdio>
 #include <memory>
 
 #include "tools/cli/commands.h"
 #include "tools/cli/limit_options.h"
+#include "tools/cli/reference_cache_options.h"
 #include "tools/engines/render_job.h"
 
 namespace qacc {
@@ -29,6 +30,7 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--shading", job->options.shading, "Facet shading: gouraud|pixel (facets engine)");
   cmd->add_flag("!--no-accuracy", job->options.report_accuracy,
                 "hw engines: skip the accuracy line (no reference render)");
+  addReferenceCacheOptions(cmd, job->use_cache, job->cache_dir);
   cmd->add_option("--threads", job->options.threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
   addLimitOptions(cmd, job->options.limits);
   cmd->callback([job] {

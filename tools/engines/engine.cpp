@@ -69,6 +69,11 @@ void writeRenderStats(const std::string& engine, const Scene& scene, const Engin
 }
 }  // namespace
 
+FrameBuffer accuracyReferenceFrame(const Scene& scene, const EngineOptions& options) {
+  if (options.accuracy_reference) return options.accuracy_reference(scene);
+  return renderReference(scene, options.threads);
+}
+
 EngineResult runEngine(const std::string& engine, const Scene& scene, const EngineOptions& options) {
   checkEngineOptions(engine, options);
   EngineResult r;
@@ -88,7 +93,7 @@ EngineResult runEngine(const std::string& engine, const Scene& scene, const Engi
   if (runFacetEngine(engine, scene, options, r)) {
     AccuracyReport a;
     if (options.report_accuracy) {
-      a = accuracyReport(renderReference(scene, options.threads), r.fb, scene.camera);
+      a = accuracyReport(accuracyReferenceFrame(scene, options), r.fb, scene.camera);
       r.notes.push_back(a.line());
     }
     if (!options.stats_path.empty()) writeRenderStats(engine, scene, options, r, options.report_accuracy ? &a : nullptr);

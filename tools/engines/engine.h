@@ -2,6 +2,7 @@
 // (batch, bench, compare). Each engine renders a Scene into a FrameBuffer and says what
 // it measured. Engines are added here, one branch each.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct EngineOptions {
   int level = 0;            // tessellation level (facets)
   std::string shading;      // facet shading mode (facets)
   bool report_accuracy = true;  // hw, hw-cycle, facets: compare with the reference after rendering
+  // Where the accuracy line's reference frame comes from: empty renders it
+  // (renderReference); `render` and `batch` serve it from the ReferenceCache.
+  std::function<FrameBuffer(const Scene&)> accuracy_reference;
   Limits limits;            // loading and tessellation bounds (--max-*)
 };
 
@@ -38,5 +42,8 @@ std::vector<std::string> engineNames();
 // Throws a SceneError naming the first `csg` object when `engine` cannot draw CSG (every
 // engine but the reference): drawing the leaves one by one would be a silently wrong image.
 void requireCsgSupport(const std::string& engine, const Scene& scene);
+// The reference frame the accuracy line compares with: options.accuracy_reference when
+// set, else a fresh renderReference.
+FrameBuffer accuracyReferenceFrame(const Scene& scene, const EngineOptions& options);
 
 }  // namespace qacc

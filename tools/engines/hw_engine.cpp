@@ -38,7 +38,7 @@ bool runHwEngine(const std::string& engine, const Scene& scene, const EngineOpti
   out.host_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   for (const auto& l : stats.summaryLines()) out.notes.push_back(l);
   if (options.report_accuracy) {
-    const FrameBuffer ref = renderReference(scene, options.threads);
+    const FrameBuffer ref = accuracyReferenceFrame(scene, options);
     stats.accuracy = accuracyReport(ref, out.fb, scene.camera);
     stats.has_accuracy = true;
     out.accuracy = stats.accuracy.line();

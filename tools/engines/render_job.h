@@ -15,6 +15,11 @@ struct RenderJob {
   std::string ids_path;
   std::string depth_path;
   EngineOptions options;
+  // The accuracy line's reference (hw engines, facets) comes from the ReferenceCache
+  // (tools/engines/reference_cache.h): rendered once per scene content, size and
+  // reference version, then read back. cache_dir empty: $QACC_CACHE or ~/.cache/qacc.
+  bool use_cache = true;
+  std::string cache_dir;
 };
 
 struct RenderJobResult {
