@@ -2,7 +2,7 @@
 // would need to draw csg scenes as triangles (docs/CSG.md, "Triangles"). OpenCSG calls
 // OpenGL extensions through GLEW's function pointers and flags, which glewInit() cannot
 // fill in an OSMesa context (Debian's GLEW is built for GLX: "Missing GL version"); they
-// are loaded here through OSMesaGetProcAddress. A box minus a box, orthographic, with the
+// are loaded through OSMesaGetProcAddress (raster/osmesa/opencsg_glew.h). A box minus a box, orthographic, with the
 // Goldfeather and the SCS algorithm: the pixels of each box's visible surface, counted.
 #include <GL/glew.h>
 // glew.h leaves GLAPI undefined, which osmesa.h needs.
@@ -17,6 +17,10 @@
 #include <opencsg.h>
 
 #include <vector>
+
+#include "raster/osmesa/opencsg_glew.h"
+
+using namespace qacc;
 
 namespace {
 
@@ -45,43 +49,6 @@ class Cube : public OpenCSG::Primitive {
   float c_[3], h_;
 };
 
-// GLEW's pointers and flags for what OpenCSG uses, from the OSMesa context.
-bool loadGlewFromOsmesa() {
-  bool ok = true;
-#define QACC_LOAD(name)                                                           \
-  __glew##name = reinterpret_cast<decltype(__glew##name)>(OSMesaGetProcAddress("gl" #name)); \
-  ok = ok && __glew##name != nullptr;
-  QACC_LOAD(BindFramebuffer)
-  QACC_LOAD(BindRenderbuffer)
-  QACC_LOAD(CheckFramebufferStatus)
-  QACC_LOAD(DeleteFramebuffers)
-  QACC_LOAD(DeleteRenderbuffers)
-  QACC_LOAD(FramebufferRenderbuffer)
-  QACC_LOAD(FramebufferTexture2D)
-  QACC_LOAD(GenFramebuffers)
-  QACC_LOAD(GenRenderbuffers)
-  QACC_LOAD(RenderbufferStorage)
-  QACC_LOAD(BeginQueryARB)
-  QACC_LOAD(EndQueryARB)
-  QACC_LOAD(GenQueriesARB)
-  QACC_LOAD(DeleteQueriesARB)
-  QACC_LOAD(GetQueryObjectuivARB)
-  QACC_LOAD(BindProgramARB)
-  QACC_LOAD(DeleteProgramsARB)
-  QACC_LOAD(GenProgramsARB)
-  QACC_LOAD(ProgramStringARB)
-#undef QACC_LOAD
-  __GLEW_ARB_framebuffer_object = GL_TRUE;
-  __GLEW_ARB_depth_texture = GL_TRUE;
-  __GLEW_ARB_occlusion_query = GL_TRUE;
-  __GLEW_ARB_texture_rectangle = GL_TRUE;
-  __GLEW_ARB_texture_non_power_of_two = GL_TRUE;
-  __GLEW_ARB_fragment_program = GL_TRUE;
-  __GLEW_ARB_vertex_program = GL_TRUE;
-  __GLEW_EXT_packed_depth_stencil = GL_TRUE;
-  return ok;
-}
-
 struct Counts {
   int first = 0, subtracted = 0;
 };
@@ -93,7 +60,7 @@ Counts boxMinusBox(int algorithm) {
   EXPECT_NE(ctx, nullptr);
   if (!ctx) return {};
   EXPECT_TRUE(OSMesaMakeCurrent(ctx, rgba.data(), GL_UNSIGNED_BYTE, W, H));
-  EXPECT_TRUE(loadGlewFromOsmesa());
+  EXPECT_TRUE(loadGlewForOpenCsg());
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
   glOrtho(-2, 2, -2, 2, -10, 10);  // 16 pixels per unit
