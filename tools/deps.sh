@@ -8,6 +8,7 @@ QACC_PACKAGES=(
   libcli11-dev                       # command line
   libgtest-dev                       # tests
   libosmesa6-dev                     # triangles through OSMesa (llvmpipe)
+  libopencsg-dev libglew-dev         # CSG of triangles (OpenCSG, which calls GL through GLEW)
   pymol-data                         # real PDB files for the molecule scene
   python3                            # tools/behaviour_check, plots
   python3-matplotlib                 # tools/plot_sweep.py: the plots of qacc sweep

@@ -106,6 +106,9 @@ const std::map<std::string, Field>& fields() {
     m["zbuffer_banks"] = intField(&HwConfig::zbuffer_banks, 1, 64);
     m["zbuffer_read_latency"] = intField(&HwConfig::zbuffer_read_latency, 1, 64);
     m["zbuffer_bank_busy"] = intField(&HwConfig::zbuffer_bank_busy, 1, 64);
+    m["csg_list_depth"] = intField(&HwConfig::csg_list_depth, 1, 1024);
+    m["csg_leaf_bits"] = intField(&HwConfig::csg_leaf_bits, 1, 24);
+    m["csg_tag_bits"] = intField(&HwConfig::csg_tag_bits, 2, 8);
     return m;
   }();
   return f;

@@ -58,6 +58,10 @@ struct HwConfig {
   int zbuffer_banks = 4;
   int zbuffer_read_latency = 2;  // cycles from request to data
   int zbuffer_bank_busy = 2;     // cycles a bank is occupied by one read-modify-write
+  // CSG interval lists (datapath/csg_interval_list.h, docs/CSG.md).
+  int csg_list_depth = 32;       // intervals per pixel list (the shipped scenes need up to 32)
+  int csg_leaf_bits = 11;        // leaf index of a list entry: up to 2^11 leaves per csg object
+  int csg_tag_bits = 4;          // end tag: surface, near/far, or one of 2^4 - 2 clip planes
 };
 
 // A configuration without a "name" is named after its file (stem of `file`).

@@ -39,6 +39,15 @@ struct ZBufferMemory {
     e = {std::int64_t(depth), z, prim, std::int16_t(cap)};
     return true;
   }
+  // The same test for a primitive drawn after others that come later in scene order
+  // (hw-cycle's CSG pass, engines/csg_cycle_pass.h): an equal stored value goes to the
+  // primitive earlier in scene order, so the result equals drawing in scene order.
+  bool testAndWriteInSceneOrder(std::size_t pix, std::uint32_t z, int prim, i128 depth, int cap) {
+    ZEntry& e = px[pix];
+    if (!(z < e.z || (z == e.z && prim < e.prim))) return false;
+    e = {std::int64_t(depth), z, prim, std::int16_t(cap)};
+    return true;
+  }
   // The value stored for an internal depth: its top zbuffer_bits fraction bits, clamped.
   static std::uint32_t storedValue(i128 depth, const HwConfig& cfg) {
     const i128 v = depth >> (cfg.depth_frac_bits - cfg.zbuffer_bits);

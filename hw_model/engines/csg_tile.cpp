@@ -2,35 +2,58 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
-#include <omp.h>
-
+#include "hw_model/datapath/clip_test.h"
+#include "hw_model/datapath/csg_interval_list.h"
 #include "hw_model/datapath/pixel_datapath.h"
+#include "modeling/scene/scene_error.h"
 
 namespace qacc {
 
-CsgFrame::CsgFrame(const Scene& scene, int width, int height)
+CsgFrame::CsgFrame(const Scene& scene, const HwConfig& cfg, int width, int height)
     : win(scene.primitives.size()), treeOfPrimitive(scene.primitives.size(), -1) {
   const Eigen::Matrix4d Minv = scene.camera.worldToWindow(width, height).inverse();
   trees.reserve(scene.csg_trees.size());
-  for (std::size_t t = 0; t < scene.csg_trees.size(); ++t)
-    for (int p : scene.csg_trees[t].leafPrimitives()) {
-      win[std::size_t(p)] = toWindow(scene.primitives[std::size_t(p)], p, Minv, width, height);
+  const long long maxLeaves = 1LL << cfg.csg_leaf_bits;
+  const std::size_t maxPlanes = (std::size_t(1) << cfg.csg_tag_bits) - 2;
+  for (std::size_t t = 0; t < scene.csg_trees.size(); ++t) {
+    const std::vector<int> leaves = scene.csg_trees[t].leafPrimitives();
+    const std::string where = "/objects/" + std::to_string(scene.csg_trees[t].object);
+    if (static_cast<long long>(leaves.size()) > maxLeaves)
+      throw SceneError(scene.file, where,
+                       "csg object with " + std::to_string(leaves.size()) +
+                           " leaves: the accelerator's interval lists address " + std::to_string(maxLeaves) +
+                           " (csg_leaf_bits " + std::to_string(cfg.csg_leaf_bits) + ")");
+    for (int p : leaves) {
+      const Primitive& prim = scene.primitives[std::size_t(p)];
+      if (prim.clip.size() > maxPlanes)
+        throw SceneError(scene.file, where,
+                         "a leaf with " + std::to_string(prim.clip.size()) +
+                             " clip planes: the accelerator's list ends tag at most " + std::to_string(maxPlanes) +
+                             " (csg_tag_bits " + std::to_string(cfg.csg_tag_bits) + ")");
+      win[std::size_t(p)] = toWindow(prim, p, Minv, width, height);
       treeOfPrimitive[std::size_t(p)] = int(t);
     }
+  }
   for (const CsgTree& t : scene.csg_trees) trees.emplace_back(t, win, width, height);
 }
 
 void drawCsgTile(const CsgPixelTree& tree, const FrameSetup& fs, const HwConfig& cfg, const ScreenBox& tile,
-                 int tileIndex, const CsgTarget& target, PixelCounters& px, OverflowCounters& ovf, CsgCounters& cc) {
+                 int tileIndex, const CsgTarget* target, PixelCounters& px, OverflowCounters& ovf, CsgCounters& cc,
+                 CsgJob* job) {
   const int tw = tile.x1 - tile.x0, th = tile.y1 - tile.y0;
   const double unit = std::ldexp(1.0, -cfg.depth_frac_bits);
-  thread_local std::vector<std::vector<CsgPixelTree::Boundary>> lists;
+  thread_local std::vector<CsgIntervalList> lists;
+  thread_local std::vector<std::uint32_t> offered;  // intervals that reached each pixel's list
+  thread_local std::vector<CsgPixelTree::Boundary> ends;
   lists.resize(std::size_t(tw) * std::size_t(th));
+  offered.assign(lists.size(), 0);
   for (auto& l : lists) l.clear();
   for (int leaf : tree.leavesInTile(tileIndex)) {
     const PrimitiveSetup& s = fs.setups[std::size_t(tree.leafPrimitive(leaf))];
     if (!s.visible || s.facet) continue;
+    const int passes = ClipTest::passes(int(s.planes.size()), cfg.clip_evaluators);
     PixelDatapath dp(s, cfg);
     const int x0 = std::max(tile.x0, s.x0), x1 = std::min(tile.x1, s.x1);
     for (int y = std::max(tile.y0, s.y0); y < std::min(tile.y1, s.y1); ++y) {
@@ -40,61 +63,51 @@ void drawCsgTile(const CsgPixelTree& tree, const FrameSetup& fs, const HwConfig&
         ++cc.leaf_pixels;
         FixedDepthInterval iv[2];
         const int n = dp.solidIntervals(ovf, iv);
-        auto& list = lists[std::size_t(y - tile.y0) * std::size_t(tw) + std::size_t(x - tile.x0)];
-        for (int k = 0; k < n; ++k) {
-          list.push_back({double(iv[k].in.z) * unit, leaf, true, iv[k].in.tag});
-          list.push_back({double(iv[k].out.z) * unit, leaf, false, iv[k].out.tag});
-        }
+        if (job) job->issued.push_back({x, y, n, passes});
+        const std::size_t pix = std::size_t(y - tile.y0) * std::size_t(tw) + std::size_t(x - tile.x0);
+        offered[pix] += std::uint32_t(n);
+        for (int k = 0; k < n; ++k)
+          cc.dropped_intervals += !lists[pix].insert(
+              {std::int64_t(iv[k].in.z), std::int64_t(iv[k].out.z), leaf, iv[k].in.tag, iv[k].out.tag},
+              cfg.csg_list_depth);
       }
     }
   }
   const double tolerance = kCsgEndTolerance * unit;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
-      auto& list = lists[std::size_t(y - tile.y0) * std::size_t(tw) + std::size_t(x - tile.x0)];
-      if (list.empty()) continue;
-      cc.interval_ends += list.size();
-      cc.max_list_ends = std::max<std::uint64_t>(cc.max_list_ends, list.size());
-      ++cc.resolved;
-      CsgHit h;
-      if (!tree.resolve(list, tolerance, h)) continue;
-      // The depth came from the fixed-point format, so this is exact.
-      const i128 z = i128(std::llround(h.z / unit));
-      ++px.covered;
-      px.caps += h.cap >= 0;
-      const std::size_t pix = std::size_t(y - target.y0) * std::size_t(target.width) + std::size_t(x - target.x0);
-      const std::uint32_t stored = ZBufferMemory::storedValue(z, cfg);
-      ZEntry& e = target.zb.px[pix];
-      const bool wins = stored < e.z || (target.afterOthers && stored == e.z && h.primitive < e.prim);
-      if (wins) {
-        e = {std::int64_t(z), stored, h.primitive, std::int16_t(h.cap)};
-        ++px.written;
-      } else {
-        ++px.depth_rejected;
+      const std::size_t pix = std::size_t(y - tile.y0) * std::size_t(tw) + std::size_t(x - tile.x0);
+      const CsgIntervalList& list = lists[pix];
+      if (list.intervals().empty()) continue;
+      ends.clear();
+      for (const CsgListInterval& iv : list.intervals()) {
+        ends.push_back({double(iv.zin) * unit, iv.leaf, true, iv.tagIn});
+        ends.push_back({double(iv.zout) * unit, iv.leaf, false, iv.tagOut});
       }
+      cc.interval_ends += ends.size();
+      cc.max_list_ends = std::max<std::uint64_t>(cc.max_list_ends, 2 * std::uint64_t(offered[pix]));
+      cc.overflowed_pixels += list.overflowed();
+      ++cc.resolved;
+      CsgSweptPixel out{x, y, int(ends.size()), -1, -1, 0};
+      CsgHit h;
+      if (tree.resolve(ends, tolerance, h)) {
+        // The depth came from the fixed-point format, so this is exact.
+        out.z = i128(std::llround(h.z / unit));
+        out.prim = h.primitive;
+        out.cap = h.cap;
+        ++px.covered;
+        px.caps += h.cap >= 0;
+        if (target) {
+          const std::size_t t =
+              std::size_t(y - target->y0) * std::size_t(target->width) + std::size_t(x - target->x0);
+          if (target->zb.testAndWrite(t, ZBufferMemory::storedValue(out.z, cfg), out.prim, out.z, out.cap))
+            ++px.written;
+          else
+            ++px.depth_rejected;
+        }
+      }
+      if (job) job->swept.push_back(out);
     }
-}
-
-void drawCsgFrame(const CsgFrame& csg, const FrameSetup& fs, const HwConfig& cfg, int width, int height,
-                  ZBufferMemory& zb, int threads, HwStats& stats) {
-  stats.csg.objects = csg.trees.size();
-  if (csg.trees.empty()) return;
-  TileBinner bins(width, height);
-  const CsgTarget target{zb, 0, 0, width, true};
-  std::vector<PixelCounters> pc(std::size_t(bins.tiles()));
-  std::vector<OverflowCounters> oc(std::size_t(bins.tiles()));
-  std::vector<CsgCounters> cc(std::size_t(bins.tiles()));
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (int t = 0; t < bins.tiles(); ++t) {
-    const ScreenBox tile = bins.tile(t);
-    for (const CsgPixelTree& tree : csg.trees)
-      if (!tree.box().intersect(tile).empty())
-        drawCsgTile(tree, fs, cfg, tile, t, target, pc[std::size_t(t)], oc[std::size_t(t)], cc[std::size_t(t)]);
-  }
-  for (int t = 0; t < bins.tiles(); ++t) {
-    stats.overflow.add(oc[std::size_t(t)]);
-    stats.csg.add(cc[std::size_t(t)]);
-  }
 }
 
 }  // namespace qacc

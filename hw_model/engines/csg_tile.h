@@ -1,10 +1,13 @@
-// The accelerator's CSG path (docs/CSG.md): per-pixel interval lists. For a `csg` object
-// in one screen tile, every leaf whose box touches the tile runs through the pixel
+// The accelerator's CSG path (docs/CSG.md): bounded per-pixel interval lists. For a `csg`
+// object in one screen tile, every leaf whose box touches the tile runs through the pixel
 // datapath in interval mode (PixelDatapath::solidIntervals) over its box ∩ tile, and its
-// interval ends are appended to the pixel's list; the tree is then evaluated per pixel by
-// the same sweep as the reference (raster/reference/csg_hit.h) on the fixed-point depths,
-// ends within kCsgEndTolerance LSBs counting as one event, and the winning boundary goes
-// through the ordinary Z test with its leaf as the primitive. Datapath only, no time.
+// intervals are inserted into the pixel's list (datapath/csg_interval_list.h: at most
+// csg_list_depth intervals, the nearest kept on overflow, the pixel counted); the tree is
+// then evaluated per pixel by the same sweep as the reference (raster/reference/csg_hit.h)
+// on the fixed-point depths, ends within kCsgEndTolerance LSBs counting as one event, and
+// the winning boundary goes through the ordinary Z test with its leaf as the primitive.
+// Datapath only, no time: `hw-cycle` times the same work from a CsgJob record
+// (engines/csg_cycle_pass.h).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -21,9 +24,11 @@ namespace qacc {
 constexpr int kCsgEndTolerance = 4;  // depth LSBs
 
 // The window-space leaves and the per-pixel trees of a scene's csg objects (not movable:
-// the trees point at `win`).
+// the trees point at `win`). Refuses (SceneError, file and JSON path of the csg object) a
+// tree the list entries cannot address: more leaves than 2^csg_leaf_bits, or a leaf with
+// more clip planes than csg_tag_bits can tag.
 struct CsgFrame {
-  CsgFrame(const Scene& scene, int width, int height);
+  CsgFrame(const Scene& scene, const HwConfig& cfg, int width, int height);
   CsgFrame(const CsgFrame&) = delete;
   CsgFrame& operator=(const CsgFrame&) = delete;
   std::vector<WindowPrimitive> win;
@@ -33,21 +38,37 @@ struct CsgFrame {
 
 // Where drawCsgTile writes: a Z-buffer whose pixel (x, y) is at (y - y0) * width + x - x0,
 // and the rule for equal stored depths. `hw` draws a csg object in scene order among the
-// other primitives (strict test: the earlier one stays); `hw-cycle` draws it after its
-// timed loop, so an equal depth goes to the primitive earlier in scene order (a csg
-// object's leaves are contiguous in the scene, so their indices stand for its place).
+// other primitives (strict test: the earlier one stays).
 struct CsgTarget {
   ZBufferMemory& zb;
   int x0 = 0, y0 = 0, width = 0;
-  bool afterOthers = false;
 };
 
-// Draws CSG tree `tree` on the pixels of tile `tileIndex` (pixels `tile`).
+// The work of one csg object in one tile, in the order the hardware does it, for the
+// timed units of hw-cycle: the (leaf, pixel) evaluations as issued, then every pixel
+// with a non-empty list with the ends its sweep reads and its winner (prim -1: none).
+struct CsgLeafPixel {
+  int x = 0, y = 0;
+  int intervals = 0;   // intervals the datapath produced (0..2), each one list insertion
+  int clipPasses = 1;  // clip-unit passes (a leaf with more planes than clip_evaluators)
+};
+struct CsgSweptPixel {
+  int x = 0, y = 0;
+  int ends = 0;  // list ends read by the sweep (2 per kept interval)
+  int prim = -1, cap = -1;
+  i128 z = 0;
+};
+struct CsgJob {
+  int tile = 0, tree = 0;
+  std::vector<CsgLeafPixel> issued;
+  std::vector<CsgSweptPixel> swept;
+};
+
+// Draws CSG tree `tree` on the pixels of tile `tileIndex` (pixels `tile`) into `target`
+// (Z test and counters `px`), or, with target null, records the winners in `job`; `job`
+// (when not null) also receives the issued leaf pixels.
 void drawCsgTile(const CsgPixelTree& tree, const FrameSetup& fs, const HwConfig& cfg, const ScreenBox& tile,
-                 int tileIndex, const CsgTarget& target, PixelCounters& px, OverflowCounters& ovf, CsgCounters& cc);
-// Draws every csg object of the frame after the other primitives into a frame-sized
-// Z-buffer (hw-cycle), tiles in parallel; the result equals drawing them in scene order.
-void drawCsgFrame(const CsgFrame& csg, const FrameSetup& fs, const HwConfig& cfg, int width, int height,
-                  ZBufferMemory& zb, int threads, HwStats& stats);
+                 int tileIndex, const CsgTarget* target, PixelCounters& px, OverflowCounters& ovf, CsgCounters& cc,
+                 CsgJob* job = nullptr);
 
 }  // namespace qacc

@@ -9,9 +9,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "hw_model/engines/csg_tile.h"
+#include "hw_model/engines/csg_cycle_pass.h"
 #include "hw_model/engines/frame_resolve.h"
 #include "hw_model/engines/frame_setup.h"
+#include "hw_model/engines/machine_run.h"
 #include "hw_model/engines/pixel_trace.h"
 #include "hw_model/timing/channel_registry.h"
 #include "hw_model/timing/host_interface_unit.h"
@@ -34,9 +35,9 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   // simulated below from each primitive's operation count.
   const FrameSetup fs = FrameSetup::build(scene, cfg, nt);
   st.overflow.add(fs.overflow);
-  // The leaves of csg objects do not enter the timed machine: they are drawn after it
-  // (csg_tile.h), untimed, with the scene-order tie rule, so the image equals hw's.
-  const CsgFrame csg(scene, scene.width, scene.height);
+  // The leaves of csg objects do not enter this machine: the CSG pass draws them after it
+  // (csg_cycle_pass.h), with the scene-order tie rule, so the image equals hw's.
+  const CsgFrame csg(scene, cfg, scene.width, scene.height);
   FrameSetup timedCopy;
   if (!csg.trees.empty()) {
     timedCopy.setups = fs.setups;
@@ -90,44 +91,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   }
 
   const auto loop0 = std::chrono::steady_clock::now();
-  // The frame ends with the first cycle after which no unit holds work and every FIFO is
-  // empty. That state can only be entered by a cycle where something changed, and the
-  // cycle after it changes nothing, so the check runs only on unchanged cycles: ending
-  // there, the frame took one cycle less than the loop ran.
-  std::uint64_t quiet = 0;
-  bool prevChanged = false;
-  for (;;) {
-    bool changed = false;
-    const std::uint64_t now = wires.now();
-    for (auto& u : units) changed |= u->tick(now);
-    changed |= wires.endCycle();
-    if (changed) {
-      quiet = 0;
-      prevChanged = true;
-      continue;
-    }
-    bool working = !wires.idle();
-    for (auto& u : units) working |= u->holdsWork();
-    if (!working) {
-      if (prevChanged) {  // the idle cycle the loop ran past the end is not part of the frame
-        wires.retractCycle();
-        for (auto& u : units) u->retractIdle();
-      }
-      break;
-    }
-    prevChanged = false;
-    // Nothing moved: jump to the next timed event.
-    std::uint64_t next = std::numeric_limits<std::uint64_t>::max();
-    for (auto& u : units) next = std::min(next, u->nextEvent());
-    if (next == std::numeric_limits<std::uint64_t>::max() || ++quiet > 1000000)
-      throw std::runtime_error("hw-cycle: the pipeline deadlocked at cycle " + std::to_string(wires.now()));
-    if (next > wires.now()) {
-      const std::uint64_t skip = next - wires.now();
-      for (auto& u : units) u->skip(skip);
-      st.fast_forwarded += skip;
-      wires.skipTo(next);
-    }
-  }
+  runMachine(wires, units, st.fast_forwarded);
   st.cycles = wires.now();
   st.loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0).count();
   for (auto& u : units) st.units.push_back(u->stats());
@@ -136,9 +100,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   if (delivered != st.pixels.written)
     throw std::logic_error("hw-cycle: shading delivered " + std::to_string(delivered) + " of " +
                            std::to_string(st.pixels.written) + " pixels");
-  drawCsgFrame(csg, fs, cfg, scene.width, scene.height, zb, nt, st);
-  st.csg.estimated_cycles = (st.csg.leaf_pixels + P - 1) / P + (st.csg.interval_ends + P - 1) / P;
-  st.cycles += st.csg.estimated_cycles;
+  runCsgCyclePass(csg, fs, cfg, scene.width, scene.height, zb, nt, st);
   out.fb = resolveFrame(scene, cfg, fs, zb, nt, st);
   st.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -29,7 +29,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   st.primitives = fs.setups.size();
   TileBinner bins(W, H);
   // A csg object is one item (index -1 - tree) in the place of its leaves (csg_tile.h).
-  const CsgFrame csg(scene, W, H);
+  const CsgFrame csg(scene, cfg, W, H);
   std::vector<bool> csgAdded(csg.trees.size(), false);
   st.csg.objects = csg.trees.size();
   for (const PrimitiveSetup& s : fs.setups) {
@@ -72,8 +72,8 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
       zb.clear();
       for (int k : bin) {
         if (k < 0) {
-          drawCsgTile(csg.trees[std::size_t(-1 - k)], fs, cfg, tile, t, CsgTarget{zb, tx0, ty0, kTile, false}, px, ovf,
-                      cc[std::size_t(t)]);
+          const CsgTarget target{zb, tx0, ty0, kTile};
+          drawCsgTile(csg.trees[std::size_t(-1 - k)], fs, cfg, tile, t, &target, px, ovf, cc[std::size_t(t)]);
           continue;
         }
         const PrimitiveSetup& s = fs.setups[std::size_t(k)];

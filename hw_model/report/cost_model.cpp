@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hw_model/datapath/csg_interval_list.h"
 #include "hw_model/datapath/reciprocal_sqrt.h"
 #include "hw_model/timing/pixel_pipeline_unit.h"
+#include "raster/pixel/tile_binner.h"
 
 namespace qacc {
 
@@ -15,6 +17,12 @@ double CostModel::digitRecurrence(int resultBits, int stepWidth, int radix) {
   const int steps = (resultBits + perStep - 1) / perStep;
   // Each stage: (radix - 1) trial adders, registers for the partial remainder and result.
   return steps * ((radix - 1) * adder(stepWidth) + reg(stepWidth + resultBits));
+}
+
+double CostModel::csgGe() const {
+  double t = 0;
+  for (const UnitCost& u : csgUnits) t += u.total();
+  return t;
 }
 
 double CostModel::totalGe() const {
@@ -101,6 +109,32 @@ CostModel CostModel::of(const HwConfig& c) {
                                                                      : "digit-recurrence sqrt + divider") +
                          "), 3 dot products, colour multipliers, specular table and sRGB ROM, pipeline registers"});
   m.zbufferBitsPerPixel = c.zbuffer_bits;
+
+  // The CSG option: per pipeline an insertion port of the list memory and a sweeper.
+  const int D = c.csg_list_depth, leafBits = c.csg_leaf_bits;
+  const int entryBits = 2 * c.depth_bits + leafBits + 2 * c.csg_tag_bits;
+  const int listWord = csgListCountBits(c) + 1 + D * entryBits;
+  // Insertion: the pixel's list word is read, the new entry's depth compared with every
+  // stored entry's at once, each slot takes its old entry, the new one or its
+  // predecessor's (two 2:1 multiplexers per bit), and the word is written back.
+  m.csgUnits.push_back({"csg_list_port", P, D * adder(c.depth_bits) + 2 * mux(double(D) * entryBits) + reg(listWord), 0,
+                        std::to_string(D) + " depth comparators, " + std::to_string(D) + "-entry insertion network, " +
+                            std::to_string(listWord) + "-bit list word register"});
+  // Sweep: the entries come in depth order from the list; the exits wait in a sorted
+  // buffer of D (a comparator and a register per slot); the event comparator with its
+  // tolerance; the walk up the tree (a counter adder and the node address).
+  const int nodeBits = leafBits + 1, counterBits = leafBits + 1;
+  m.csgUnits.push_back({"csg_sweep", P,
+                        D * (adder(c.depth_bits) + reg(c.depth_bits + leafBits + c.csg_tag_bits)) +
+                            2 * adder(c.depth_bits) + adder(counterBits) + reg(nodeBits + counterBits) +
+                            reg(2.0 * entryBits),
+                        0,
+                        "exit buffer of " + std::to_string(D) + " (comparators, registers), event comparator, "
+                        "tree walk (counter adder, node register)"});
+  m.csgListBitsPerPixel = qacc::csgListBitsPerPixel(c);
+  m.csgListBits = double(kCsgListBuffers) * TileBinner::kTileSize * TileBinner::kTileSize * m.csgListBitsPerPixel;
+  // Per sweeper: an inside counter per node of a tree of up to 2^csg_leaf_bits leaves.
+  m.csgTreeStateBits = double(P) * double(2LL << leafBits) * counterBits;
   return m;
 }
 

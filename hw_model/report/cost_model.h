@@ -7,11 +7,16 @@
 //   multiplier a x b (array/Wallace)       6 GE per partial-product bit + final adder (a+b)
 //   barrel shifter w bits                  2 GE per bit per stage, ceil(log2 w) stages
 //   ROM bit                                0.3 GE
+//   2:1 multiplexer bit                    2 GE
 //   digit recurrence (sqrt, divide), pipelined, one stage per step: (radix - 1) adders of
 //   the step's width and the stage's registers (partial remainder + partial result)
 //   floating multiply-add (setup, IEEE single) = 24x24 multiplier + 3 adders and a
 //   shifter of 48 bits.
 // The Z-buffer memory itself is off-chip (counted in bits, not GE).
+// The CSG option (interval lists, docs/CSG.md) is priced apart from the base machine
+// (`csgUnits`, `csgGe()`), so that the cost of a board without it stays comparable: its
+// list memory (kCsgListBuffers tile buffers of 32x32 pixel lists) and the tree state of
+// its sweepers are SRAM, counted in bits; its logic in GE.
 #pragma once
 #include <string>
 #include <vector>
@@ -33,6 +38,12 @@ struct CostModel {
   std::vector<UnitCost> units;
   double totalGe() const;
   double zbufferBitsPerPixel = 0;  // off-chip memory per pixel
+  // The CSG option.
+  std::vector<UnitCost> csgUnits;
+  double csgGe() const;
+  double csgListBitsPerPixel = 0;  // one pixel's bounded interval list
+  double csgListBits = 0;          // the list memory: tile buffers x 32x32 pixels x bits per pixel
+  double csgTreeStateBits = 0;     // the sweepers' per-node inside counters
   static CostModel of(const HwConfig& cfg);
   // Building blocks (GE).
   static double reg(double bits) { return 6.0 * bits; }
@@ -40,6 +51,7 @@ struct CostModel {
   static double multiplier(double a, double b) { return 6.0 * a * b + adder(a + b); }
   static double shifter(double bits);
   static double rom(double bits) { return 0.3 * bits; }
+  static double mux(double bits) { return 2.0 * bits; }
   static double digitRecurrence(int resultBits, int stepWidth, int radix);
   static double floatMad() { return multiplier(24, 24) + 3 * adder(48) + shifter(48); }
 };

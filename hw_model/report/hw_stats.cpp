@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hw_model/datapath/csg_interval_list.h"
 #include "hw_model/report/stats_file.h"
 
 namespace qacc {
@@ -20,6 +21,24 @@ void CsgCounters::add(const CsgCounters& o) {
   interval_ends += o.interval_ends;
   max_list_ends = std::max(max_list_ends, o.max_list_ends);
   resolved += o.resolved;
+  overflowed_pixels += o.overflowed_pixels;
+  dropped_intervals += o.dropped_intervals;
+  cycles += o.cycles;
+}
+
+std::string CsgCounters::line(const HwConfig& cfg) const {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "csg: %llu objects, %llu leaf-pixel evaluations, %llu pixels resolved, %llu list ends swept; lists of "
+                "%d intervals (%d bits per pixel), longest demand %llu ends; %llu pixels overflowed (%llu intervals "
+                "dropped)",
+                (unsigned long long)objects, (unsigned long long)leaf_pixels, (unsigned long long)resolved,
+                (unsigned long long)interval_ends, cfg.csg_list_depth, csgListBitsPerPixel(cfg),
+                (unsigned long long)max_list_ends, (unsigned long long)overflowed_pixels,
+                (unsigned long long)dropped_intervals);
+  std::string s = buf;
+  if (cycles) s += "; CSG pass " + std::to_string(cycles) + " cycles (simulated)";
+  return s;
 }
 
 void PixelCounters::add(const PixelCounters& o) {
@@ -57,7 +76,10 @@ nlohmann::ordered_json toJ(const HwStats& s) {
   if (s.csg.objects)
     j["csg"] = {{"objects", s.csg.objects},         {"leaf_pixels", s.csg.leaf_pixels},
                 {"interval_ends", s.csg.interval_ends}, {"max_list_ends", s.csg.max_list_ends},
-                {"resolved_pixels", s.csg.resolved}, {"estimated_cycles", s.csg.estimated_cycles}};
+                {"resolved_pixels", s.csg.resolved}, {"overflowed_pixels", s.csg.overflowed_pixels},
+                {"dropped_intervals", s.csg.dropped_intervals}, {"cycles", s.csg.cycles},
+                {"list_depth_intervals", s.configuration.csg_list_depth},
+                {"list_bits_per_pixel", csgListBitsPerPixel(s.configuration)}};
   j["overdraw"] = s.overdraw();
   j["overflows"] = {{"total", s.overflow.total()},
                     {"setup", s.overflow.setup.events},
@@ -99,6 +121,14 @@ nlohmann::ordered_json toJ(const HwStats& s) {
   for (const UnitCost& u : s.cost.units)
     cost.push_back({{"name", u.unit}, {"copies", u.copies}, {"ge_each", u.ge_each}, {"rom_bits", u.rom_bits}});
   j["cost"] = {{"total_ge", s.cost.totalGe()}, {"zbuffer_bits_per_pixel", s.cost.zbufferBitsPerPixel}, {"units", cost}};
+  nlohmann::ordered_json csgCost = nlohmann::ordered_json::array();
+  for (const UnitCost& u : s.cost.csgUnits)
+    csgCost.push_back({{"name", u.unit}, {"copies", u.copies}, {"ge_each", u.ge_each}});
+  j["cost"]["csg_option"] = {{"total_ge", s.cost.csgGe()},
+                             {"list_bits_per_pixel", s.cost.csgListBitsPerPixel},
+                             {"list_memory_bits", s.cost.csgListBits},
+                             {"tree_state_bits", s.cost.csgTreeStateBits},
+                             {"units", csgCost}};
   j["configuration"] = nlohmann::ordered_json::parse(hwConfigToJson(s.configuration));
   if (s.has_accuracy) {
     nlohmann::ordered_json a;
@@ -147,6 +177,19 @@ std::vector<std::string> HwStats::summaryLines() const {
     std::snprintf(buf, sizeof buf, "%s %s %s%.1f", i ? " +" : "", u.unit.c_str(),
                   u.copies > 1 ? (std::to_string(u.copies) + " x ").c_str() : "", u.ge_each / 1e3);
     cost += buf;
+  }
+  if (csg.objects) {
+    out.push_back(csg.line(configuration));
+    std::string c = "CSG option (cost model, not in the total below): " +
+                    std::to_string(int(std::lround(this->cost.csgGe() / 1e3))) + " kGE =";
+    for (std::size_t i = 0; i < this->cost.csgUnits.size(); ++i) {
+      const UnitCost& u = this->cost.csgUnits[i];
+      std::snprintf(buf, sizeof buf, "%s %s %d x %.1f", i ? " +" : "", u.unit.c_str(), u.copies, u.ge_each / 1e3);
+      c += buf;
+    }
+    std::snprintf(buf, sizeof buf, " kGE; list memory %.0f bits (%.0f per pixel, %d tile buffers), tree state %.0f bits",
+                  this->cost.csgListBits, this->cost.csgListBitsPerPixel, kCsgListBuffers, this->cost.csgTreeStateBits);
+    out.push_back(c + buf);
   }
   out.push_back(cost + " kGE; Z-buffer memory off-chip, " + std::to_string(int(this->cost.zbufferBitsPerPixel)) +
                 " bits per pixel");

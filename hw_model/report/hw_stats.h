@@ -22,18 +22,21 @@ struct PixelCounters {
   void add(const PixelCounters& o);
 };
 
-// The CSG path (engines/csg_tile.h): per-pixel interval lists of the csg objects' leaves.
+// The CSG path (engines/csg_tile.h): bounded per-pixel interval lists of the csg
+// objects' leaves (datapath/csg_interval_list.h).
 struct CsgCounters {
-  std::uint64_t objects = 0;         // csg objects in the scene
-  std::uint64_t leaf_pixels = 0;     // (pixel, leaf) interval evaluations by the pixel datapath
-  std::uint64_t interval_ends = 0;   // interval ends written to the per-pixel lists
-  std::uint64_t max_list_ends = 0;   // the longest per-pixel list, in ends
-  std::uint64_t resolved = 0;        // pixels whose tree was evaluated
-  // hw-cycle: the CSG pass after the timed loop, estimated, not simulated: the leaf-pixel
-  // evaluations through the P pixel pipelines at one per cycle each, then the per-pixel
-  // sweeps at one list end per cycle per pipeline, without overlap. Added to `cycles`.
-  std::uint64_t estimated_cycles = 0;
+  std::uint64_t objects = 0;            // csg objects in the scene
+  std::uint64_t leaf_pixels = 0;        // (pixel, leaf) interval evaluations by the pixel datapath
+  std::uint64_t interval_ends = 0;      // interval ends kept in the per-pixel lists and swept
+  std::uint64_t max_list_ends = 0;      // the longest per-pixel demand, in ends (before bounding)
+  std::uint64_t resolved = 0;           // pixels whose tree was evaluated
+  std::uint64_t overflowed_pixels = 0;  // pixels whose list overflowed (their image may be wrong)
+  std::uint64_t dropped_intervals = 0;  // intervals left out of full lists
+  // hw-cycle: the cycles of the CSG pass, simulated by its timed units after the other
+  // primitives (engines/csg_cycle_pass.h); included in `cycles`.
+  std::uint64_t cycles = 0;
   void add(const CsgCounters& o);
+  std::string line(const HwConfig& cfg) const;  // the summary line of `qacc render`
 };
 
 struct UnitStats {

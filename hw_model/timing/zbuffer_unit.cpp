@@ -43,7 +43,10 @@ bool ZBufferUnit::tick(std::uint64_t now) {
       continue;
     }
     bankFree_[std::size_t(bank)] = now + std::uint64_t(p_.bank_busy);
-    const bool pass = zb_.testAndWrite(zb_.index(r.x, r.y), ZBufferMemory::storedValue(r.z, cfg_), r.prim, r.z, r.cap);
+    const std::size_t pix = zb_.index(r.x, r.y);
+    const std::uint32_t stored = ZBufferMemory::storedValue(r.z, cfg_);
+    const bool pass = sceneOrderTies_ ? zb_.testAndWriteInSceneOrder(pix, stored, r.prim, r.z, r.cap)
+                                      : zb_.testAndWrite(pix, stored, r.prim, r.z, r.cap);
     if (pass) ++px_.written;
     else ++px_.depth_rejected;
     reads_[p]->accept({pass, r});

@@ -36,6 +36,9 @@ class ZBufferUnit : public Unit {
   std::uint64_t nextEvent() const override;
   bool holdsWork() const override;
   std::uint64_t conflicts() const { return conflicts_; }
+  // Equal stored depths go to the primitive earlier in scene order (ZBufferMemory::
+  // testAndWriteInSceneOrder): for primitives drawn after later ones (the CSG pass).
+  void tiesInSceneOrder() { sceneOrderTies_ = true; }
 
  private:
   struct InFlight {
@@ -51,6 +54,7 @@ class ZBufferUnit : public Unit {
   std::vector<std::unique_ptr<Pipeline<InFlight>>> reads_;  // per pipeline port
   std::uint64_t conflicts_ = 0;
   std::size_t rr_ = 0;
+  bool sceneOrderTies_ = false;
 };
 
 }  // namespace qacc

@@ -10,16 +10,24 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "raster/osmesa/facet_csg_draw.h"
+#ifdef QACC_HAVE_OPENCSG
+#include "raster/osmesa/opencsg_glew.h"
+#endif
 #include "raster/pixel/shading.h"
 
 namespace qacc {
 
 namespace {
+
+using FacetCsgDrawPtr = std::unique_ptr<FacetCsgDraw>;
 
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t0) {
@@ -205,10 +213,10 @@ void createContext(ContextGuard& guard, std::vector<float>& rgba, int W, int H, 
   // when the first context is created).
   setenv("GALLIUM_DRIVER", "llvmpipe", 1);
   if (threads > 0) setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
-  const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 0,
+  const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
                          OSMESA_ACCUM_BITS, 0, OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
   guard.ctx = OSMesaCreateContextAttribs(attribs, nullptr);
-  if (!guard.ctx) guard.ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
+  if (!guard.ctx) guard.ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);  // stencil: OpenCSG
   if (!guard.ctx) throw std::runtime_error("OSMesa: cannot create a context");
   rgba.assign(std::size_t(W) * H * 4, 0.0f);
   if (!OSMesaMakeCurrent(guard.ctx, rgba.data(), GL_FLOAT, W, H))
@@ -366,8 +374,35 @@ void readIds(const Scene& scene, const std::vector<float>& rgba, const std::vect
       for (int k = 0; k < 3; ++k) res.fb.color.data[i * 3 + k] = bg8[k];
 }
 
-void drawArrays(std::size_t count) {
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+// One pass over the scene: every triangle, or, with csg objects, through OpenCSG
+// (facet_csg_draw.h), the GLSL program `prog` (0: none) unbound around OpenCSG's passes.
+// `colours` is the colour array of the pass.
+void drawScene(std::size_t count, const FacetCsgDrawPtr& csg, const ShaderApi& api, GLuint prog,
+               const VertexArrays& va, const std::vector<GLfloat>& colours) {
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+#ifdef QACC_HAVE_OPENCSG
+  if (csg) {
+    const std::function<void()> bind = [&] {
+      glEnableClientState(GL_VERTEX_ARRAY);
+      glVertexPointer(3, GL_FLOAT, 0, va.pos.data());
+      glEnableClientState(GL_NORMAL_ARRAY);
+      glNormalPointer(GL_FLOAT, 0, va.nor.data());
+      glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+      glTexCoordPointer(2, GL_FLOAT, 0, va.spec.data());
+      glEnableClientState(GL_COLOR_ARRAY);
+      glColorPointer(3, GL_FLOAT, 0, colours.data());
+    };
+    csg->draw(bind, [&] { if (prog) api.useProgram(0); }, [&] { if (prog) api.useProgram(prog); });
+    glFinish();
+    return;
+  }
+#else
+  (void)csg;
+  (void)api;
+  (void)prog;
+  (void)va;
+  (void)colours;
+#endif
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(count));
   glFinish();
 }
@@ -392,6 +427,15 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
     if (prog) res.shading_used = FacetShading::PerPixel;
   }
   const VertexArrays va = vertexArrays(scene, mesh, res.shading_used == FacetShading::Gouraud);
+  FacetCsgDrawPtr csg;
+  if (!scene.csg_trees.empty()) {
+#ifdef QACC_HAVE_OPENCSG
+    if (!loadGlewForOpenCsg()) throw std::runtime_error("OSMesa: a GL function OpenCSG needs is missing");
+    csg = std::make_unique<FacetCsgDraw>(scene, mesh);
+#else
+    throw std::invalid_argument(facetCsgMissingMessage());
+#endif
+  }
   setFixedState(scene, W, H, va);
   if (prog) usePerPixelProgram(api, prog, scene, res);
   glColorPointer(3, GL_FLOAT, 0, va.col.data());
@@ -403,7 +447,7 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
 
   // Colour pass.
   const auto tDraw = Clock::now();
-  drawArrays(va.count);
+  drawScene(va.count, csg, api, prog, va, va.col);
   res.draw_ms = msSince(tDraw);
   if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OSMesa: GL error while drawing facets");
   const auto tRead = Clock::now();
@@ -417,7 +461,7 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
   glShadeModel(GL_FLAT);
   glColorPointer(3, GL_FLOAT, 0, va.idc.data());
   glClearColor(0, 0, 0, 0);
-  drawArrays(va.count);
+  drawScene(va.count, csg, api, 0, va, va.idc);
   readIds(scene, rgba, depth, W, H, res);
   res.id_pass_ms = msSince(tId);
   if (prog) api.deleteProgram(prog);

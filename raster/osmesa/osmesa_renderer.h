@@ -50,6 +50,16 @@ constexpr bool facetRendererAvailable() { return true; }
 #else
 constexpr bool facetRendererAvailable() { return false; }
 #endif
+// csg objects through OpenCSG (facet_csg_draw.h), built when CMake finds OpenCSG and GLEW.
+#ifdef QACC_HAVE_OPENCSG
+constexpr bool facetCsgAvailable() { return true; }
+#else
+constexpr bool facetCsgAvailable() { return false; }
+#endif
+inline const char* facetCsgMissingMessage() {
+  return "the 'facets' engine draws csg objects through OpenCSG: this qacc was built without it (install "
+         "libopencsg-dev and libglew-dev and reconfigure)";
+}
 // Message for builds without OSMesa.
 inline const char* facetRendererMissingMessage() {
   return "the 'facets' engine needs OSMesa: this qacc was built without it (install libosmesa6-dev "

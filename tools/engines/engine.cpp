@@ -6,6 +6,7 @@
 #include "modeling/scene/scene_error.h"
 #include "hw_model/report/accuracy_report.h"
 #include "hw_model/report/stats_file.h"
+#include "raster/osmesa/osmesa_renderer.h"
 #include "raster/reference/reference_renderer.h"
 #include "tools/engines/facet_engine.h"
 #include "tools/engines/hw_engine.h"
@@ -21,8 +22,10 @@ std::vector<std::string> engineNames() {
 
 void requireCsgSupport(const std::string& engine, const Scene& scene) {
   if (scene.csg_trees.empty() || engine == "reference" || engine == "hw" || engine == "hw-cycle") return;
+  if (engine == "facets" && facetCsgAvailable()) return;
   throw SceneError(scene.file, "/objects/" + std::to_string(scene.csg_trees.front().object),
-                   "engine '" + engine + "' cannot draw 'csg' objects yet (use --engine reference)");
+                   "engine '" + engine + "' cannot draw 'csg' objects (" +
+                       (engine == "facets" ? std::string(facetCsgMissingMessage()) : std::string("use --engine reference")) + ")");
 }
 
 void checkEngineOptions(const std::string& engine, const EngineOptions& options) {

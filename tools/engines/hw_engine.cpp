@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <stdexcept>
+#include <string>
 
 #include "hw_model/report/accuracy_report.h"
 #include "hw_model/engines/cycle_engine.h"
@@ -42,6 +43,10 @@ bool runHwEngine(const std::string& engine, const Scene& scene, const EngineOpti
     stats.accuracy = accuracyReport(ref, out.fb, scene.camera);
     stats.has_accuracy = true;
     out.accuracy = stats.accuracy.line();
+    if (stats.csg.overflowed_pixels > 0)
+      out.accuracy += "; " + std::to_string(stats.csg.overflowed_pixels) +
+                      " pixels of csg objects overflowed their interval lists (csg_list_depth " +
+                      std::to_string(cfg.csg_list_depth) + "; the nearest intervals kept): they may be wrong";
     out.notes.push_back(out.accuracy);
   }
   if (!options.stats_path.empty()) stats.write(options.stats_path);

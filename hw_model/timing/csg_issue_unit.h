@@ -1,0 +1,46 @@
+// CsgIssueUnit: the traversal of hw-cycle's CSG pass (engines/csg_cycle_pass.h). Job by
+// job (a csg object in one tile, in tile order, csg objects in scene order), it issues
+// every leaf's pixels over its box ∩ tile, in the job's order, to the P pipelines
+// screen-interleaved like the traversal unit (pipeline (x + y) mod P, up to P pixels per
+// cycle, a new row on a new cycle), then one end marker per pipeline. A job starts only
+// when a tile list buffer is free (kCsgListBuffers; the sweep unit frees one per job done).
+#pragma once
+#include <vector>
+
+#include "hw_model/config/hw_config.h"
+#include "hw_model/engines/csg_tile.h"
+#include "hw_model/timing/channel.h"
+#include "hw_model/timing/csg_tokens.h"
+#include "hw_model/timing/traversal_unit.h"
+#include "hw_model/timing/unit.h"
+
+namespace qacc {
+
+class CsgIssueUnit : public Unit {
+ public:
+  struct Params {
+    int pipelines = 2;
+    int list_buffers = kCsgListBuffers;
+    static Params from(const HwConfig& cfg) { return {cfg.pipelines, kCsgListBuffers}; }
+    int pipelineOf(int x, int y) const { return TraversalUnit::Params{pipelines}.pipelineOf(x, y); }
+  };
+
+  CsgIssueUnit(const Params& p, const std::vector<CsgJob>& jobs, Channel<int>& bufferFreed,
+               std::vector<Channel<CsgToken>*> out)
+      : Unit("csg_issue"), p_(p), jobs_(jobs), freed_(bufferFreed), out_(std::move(out)), free_(p.list_buffers) {}
+  bool tick(std::uint64_t now) override;
+  bool holdsWork() const override { return job_ >= 0 || next_ < jobs_.size(); }
+
+ private:
+  Params p_;
+  const std::vector<CsgJob>& jobs_;
+  Channel<int>& freed_;
+  std::vector<Channel<CsgToken>*> out_;
+  int free_;
+  int job_ = -1;          // the job being issued
+  std::size_t next_ = 0;  // the next job to start
+  std::size_t k_ = 0;     // its next pixel
+  std::uint64_t markers_ = 0;  // pipelines that have the job's end marker
+};
+
+}  // namespace qacc
