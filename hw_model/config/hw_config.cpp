@@ -9,6 +9,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "modeling/scene/scene_error.h"
+#include "modeling/scene/strict_json.h"
+#include "modeling/support/bounded_file.h"
+
 namespace qacc {
 
 namespace {
@@ -119,15 +123,23 @@ const std::map<std::string, Field>& fields() {
 HwConfig parseHwConfig(const std::string& text, const std::string& file) {
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text);
-  } catch (const std::exception& e) {
-    throw std::invalid_argument(file + ": JSON syntax error: " + e.what());
+    j = parseStrictJson(text, file);  // syntax errors with line and column, duplicate keys refused
+  } catch (const SceneError& e) {
+    throw std::invalid_argument(e.what());
   }
-  if (!j.is_object()) throw std::invalid_argument(file + ": expected a JSON object");
+  if (!j.is_object()) throw std::invalid_argument(file + ": /: expected a JSON object");
+  const auto format = j.find("format");
+  if (format == j.end()) throw std::invalid_argument(file + ": /: missing \"format\" (expected \"" + kHwConfigFormat + "\")");
+  if (!format->is_string() || format->get<std::string>() != kHwConfigFormat)
+    throw std::invalid_argument(file + ": /format: expected \"" + std::string(kHwConfigFormat) + "\", got " + format->dump());
   HwConfig c;
   if (!j.contains("name") && !file.empty()) c.name = std::filesystem::path(file).stem().string();
   for (auto it = j.begin(); it != j.end(); ++it) {
-    if (it.key() == "comment" || it.key() == "format") continue;
+    if (it.key() == "format") continue;
+    if (it.key() == "comment") {
+      if (!it.value().is_string()) throw std::invalid_argument(file + ": /comment: expected a string");
+      continue;
+    }
     setHwConfigKey(c, it.key(), it.value(), file + ": /" + it.key());
   }
   checkHwConfig(c, file);
@@ -152,6 +164,13 @@ void checkHwConfig(const HwConfig& c, const std::string& file) {
   if (c.interp_acc_bits < c.delta_bits + c.interp_frac_bits + 2)
     fail("interp_acc_bits", std::to_string(c.interp_acc_bits) + " cannot hold delta_bits + interp_frac_bits + 2 (" +
                                 std::to_string(c.delta_bits + c.interp_frac_bits + 2) + "): the forward differences would overflow");
+  // The shading unit's specular table has 2^unit_frac_bits + 1 entries per material and is
+  // built before the first pixel: at unit_frac_bits 28, 1 GiB of 32-bit entries per material.
+  if (c.unit_frac_bits > kMaxUnitFracBits)
+    fail("unit_frac_bits", std::to_string(c.unit_frac_bits) + " needs a specular table of 2^" +
+                               std::to_string(c.unit_frac_bits) + " + 1 entries per material, above the limit of 2^" +
+                               std::to_string(kMaxUnitFracBits) + " + 1 (unit vectors of 1." +
+                               std::to_string(kMaxUnitFracBits) + " already resolve 1e-6 rad)");
   if (c.unit_frac_bits > c.normal_bits)
     fail("unit_frac_bits", std::to_string(c.unit_frac_bits) + " exceeds normal_bits (" + std::to_string(c.normal_bits) +
                                "): a unit vector cannot carry more fraction bits than the vector it comes from");
@@ -185,16 +204,18 @@ nlohmann::json hwConfigValue(const HwConfig& c, const std::string& key) {
 }
 
 HwConfig loadHwConfig(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open accelerator configuration");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parseHwConfig(ss.str(), path);
+  std::string text;
+  try {
+    text = readFileBounded(path, kMaxHwConfigBytes, "accelerator configuration");
+  } catch (const FileReadError& e) {
+    throw std::invalid_argument(path + ": " + e.what());
+  }
+  return parseHwConfig(text, path);
 }
 
 std::string hwConfigToJson(const HwConfig& c) {
   nlohmann::json j = nlohmann::json::object();
-  j["format"] = "qacc-hw-config/1";
+  j["format"] = kHwConfigFormat;
   for (const auto& [k, f] : fields()) j[k] = f.get(c);
   return j.dump(2);
 }

@@ -3,6 +3,7 @@
 // own parameter section from it (`Params::from`, timing/), with its latency formula. Loaded from one JSON file (`--config`); a key that is
 // absent keeps its default, an unknown key or a value out of range is refused.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,14 @@ struct HwConfig {
   int csg_tag_bits = 4;          // end tag: surface, near/far, or one of 2^4 - 2 clip planes
 };
 
+// The configuration file format: strict JSON (modeling/scene/strict_json.h: syntax errors
+// with line and column, duplicate keys refused), "format" required and equal to
+// kHwConfigFormat, "comment" a string, every other key a parameter; read with a size bound.
+constexpr const char* kHwConfigFormat = "qacc-hw-config/1";
+constexpr std::size_t kMaxHwConfigBytes = std::size_t(1) << 20;
+// The largest unit_frac_bits accepted: the specular table (2^unit_frac_bits + 1 entries per
+// material) is built in full before the first pixel.
+constexpr int kMaxUnitFracBits = 20;
 // A configuration without a "name" is named after its file (stem of `file`).
 HwConfig loadHwConfig(const std::string& path);
 HwConfig parseHwConfig(const std::string& text, const std::string& file);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hw_model/datapath/plane_setup.h"
+#include "modeling/geometry/unit_plane.h"
 #include "raster/pixel/window_primitive.h"
 
 namespace qacc {
@@ -126,25 +128,43 @@ PrimitiveSetup setupPrimitive(const Scene& scene, int index, const Eigen::Matrix
   const int Fi = cfg.interp_frac_bits, Fz = cfg.depth_frac_bits;
   const int zkWidth = cfg.depth_bits + Fi + 16;
 
-  // Clip planes in local window coordinates: value = pu u + pv v + pz z + p0.
+  // Clip planes: value = pu u + pv v + pz z + p0 in local coordinates, quantised by
+  // quantizePlane from the plane and the screen alone (not from this primitive's box), so that
+  // a plane and its opposite in two neighbouring cells are exact integer negations.
   for (std::size_t i = 0; i < w.clip.size(); ++i) {
     const Eigen::Vector4d pl = T.transpose() * w.clip[i].p;
-    PlaneSetup ps;
-    ps.owns = w.clip[i].owns_boundary;
-    const double bound = std::fabs(pl[0]) * umax + std::fabs(pl[1]) * vmax + std::fabs(pl[3]) + std::fabs(pl[2]);
-    const int ep = blockExponent(bound, cfg.clip_bits - 2);
-    const int sc = ep + Fi, wd = cfg.clip_bits + Fi + 2;
-    ps.h = {quantize(pl[0], sc, wd, cfg.overflow, ovf), quantize(pl[1], sc, wd, cfg.overflow, ovf),
-            quantize(pl[3], sc, wd, cfg.overflow, ovf)};
-    ps.pz = quantize(pl[2], sc, wd, cfg.overflow, ovf);
-    ps.zdir = ps.pz > 0 ? 1 : (ps.pz < 0 ? -1 : 0);
+    PlaneSetup ps = quantizePlane(w.clip[i], s.x0, s.y0, scene.width, scene.height, cfg, ovf);
+    if (ps.zdir != 0) {
+      // The plane's depth -(pu u + pv v + p0) / pz feeds the cap logic through a linear
+      // interpolator whose range is 2^(depth_bits - Fz + 15) depth units. A plane through the
+      // eye is parallel to the lines of sight, pz only rounding noise: its depth steps by
+      // about 1e17 per pixel, the saturated interpolator emptied every line of one of two
+      // solid cells sharing it (half a solid sphere missing), and pz z, evaluated at each
+      // cell's own depth, let both cells drop a row of pixel centres on the plane. Such a steep
+      // plane, or one whose depth is outside the depth range at every pixel of the box, bounds
+      // no line inside [0, 1] except within 2^-19 pixel of its trace: it is tested as parallel
+      // to the lines (pz = 0, zdir = 0), kept or dropped whole by h(u, v), with the ownership
+      // rule on exact zeros, the same decision in both cells.
+      const double range = std::ldexp(1.0, cfg.depth_bits - Fz + 15) * std::fabs(pl[2]);
+      double zlo = HUGE_VAL, zhi = -HUGE_VAL;
+      for (double u : {0.0, umax})
+        for (double v : {0.0, vmax}) {
+          const double z = -(pl[0] * u + pl[1] * v + pl[3]) / pl[2];
+          zlo = std::min(zlo, z);
+          zhi = std::max(zhi, z);
+        }
+      if (std::fabs(pl[0]) >= range || std::fabs(pl[1]) >= range || zhi < -0.5 || zlo > 1.5) {
+        ps.pz = 0;
+        ps.zdir = 0;
+      }
+    }
     if (ps.zdir != 0 && s.solid) {
       const int zs = Fz + Fi;
       ps.zk = {quantize(-pl[0] / pl[2], zs, zkWidth, cfg.overflow, ovf),
                quantize(-pl[1] / pl[2], zs, zkWidth, cfg.overflow, ovf),
                quantize(-pl[3] / pl[2], zs, zkWidth, cfg.overflow, ovf)};
     }
-    const Eigen::Vector3d n = prim.clip[i].p.head<3>();
+    const Eigen::Vector3d n = unitPlane(prim.clip[i].p).head<3>();  // scale-free (coefficients near 1e300)
     const VectorSetup cn = constantVector(n, cfg, ovf);
     for (int k = 0; k < 3; ++k) ps.capNormal[k] = cn.uv[k].C;
     s.planes.push_back(ps);

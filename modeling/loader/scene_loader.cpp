@@ -10,6 +10,7 @@
 #include "modeling/geometry/natural_quadrics.h"
 #include "modeling/loader/object_registry.h"
 #include "modeling/geometry/placed_exact_surface.h"
+#include "modeling/geometry/unit_plane.h"
 #include "modeling/scene/strict_json.h"
 #include "modeling/support/bounded_file.h"
 
@@ -172,7 +173,7 @@ std::vector<HalfSpace> readClip(const JsonNode& n) {
   for (const JsonNode& c : n.elements()) {
     const Eigen::Vector4d p = c.vec4();
     if (p.head<3>().cwiseAbs().maxCoeff() == 0.0) c.fail("clip plane [a, b, c, d] needs a non-zero normal (a, b, c)");
-    out.emplace_back(p);
+    out.push_back(unitPlane(HalfSpace(p)));  // scale-free: 1e300 coefficients stay representable
   }
   return out;
 }

@@ -5,6 +5,7 @@
 
 #include "modeling/geometry/piece_extent.h"
 #include "modeling/geometry/stable_roots.h"
+#include "modeling/geometry/unit_plane.h"
 
 namespace qacc {
 namespace {
@@ -39,11 +40,6 @@ bool axisExtent(double P, double R, double S, double T, double U, double K, doub
   lo = r.r[0];
   hi = r.r[r.count - 1];
   return std::isfinite(lo) && std::isfinite(hi);
-}
-
-Eigen::Vector4d normalisedPlane(const Eigen::Vector4d& p) {
-  const double m = p.cwiseAbs().maxCoeff();
-  return m > 0 ? Eigen::Vector4d(p / m) : p;
 }
 
 }  // namespace
@@ -154,14 +150,17 @@ WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d
   w.Q = qw.Q;
   w.clip.reserve(prim.clip.size());
   for (const auto& h : prim.clip) {
-    const HalfSpace t = h.transformedByInverse(Minv);
-    w.clip.emplace_back(normalisedPlane(t.p), t.owns_boundary);
+    const HalfSpace t = unitPlane(h).transformedByInverse(Minv);
+    // Scaled by powers of two (unit_plane.h), in world space so that no transform overflows
+    // and in window space: exact, so a plane through pixel centres stays zero there, and
+    // sign-symmetric, so a plane and its opposite stay exact negations.
+    w.clip.emplace_back(unitPlane(t.p), t.owns_boundary);
   }
   if (prim.isPlanar() && !prim.solid) {
     // A plane f = p·X (times the weight) in world space: restrict the polytope to it.
     const Eigen::Vector4d p(2 * prim.quadric.Q(0, 3), 2 * prim.quadric.Q(1, 3), 2 * prim.quadric.Q(2, 3),
                             prim.quadric.Q(3, 3));
-    const Eigen::Vector4d pw = normalisedPlane(Minv.transpose() * p);
+    const Eigen::Vector4d pw = unitPlane(Minv.transpose() * p);
     w.box = polytopeBoxOnPlane(w.clip, width, height, &pw);
     return w;
   }

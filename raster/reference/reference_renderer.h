@@ -14,7 +14,7 @@ namespace qacc {
 
 // Changes whenever the reference's output for a scene can change: part of the key of the
 // reference render cache (tools/engines/reference_cache.h).
-constexpr const char* kReferenceRendererVersion = "qacc-reference/2";  // 2: screen boxes by piece_extent.h
+constexpr const char* kReferenceRendererVersion = "qacc-reference/3";  // 2: screen boxes by piece_extent.h; 3: clip planes scaled by powers of two (unit_plane.h)
 
 struct ReferenceStats {
   double setup_ms = 0;      // window-space setup and binning

@@ -136,16 +136,16 @@ TEST(FixedPoint, QuantizeIsSymmetricAndCountsOverflow) {
 }
 
 TEST(HwConfig, ParsesAndRefusesBadKeys) {
-  const HwConfig c = parseHwConfig(R"({"pipelines": 4, "depth_variant": "reciprocal", "rounding": "truncate"})", "t.json");
+  const HwConfig c = parseHwConfig(R"({"format": "qacc-hw-config/1", "pipelines": 4, "depth_variant": "reciprocal", "rounding": "truncate"})", "t.json");
   EXPECT_EQ(c.pipelines, 4);
   EXPECT_EQ(c.depth_variant, DepthVariant::Reciprocal);
   EXPECT_EQ(c.rounding, Rounding::Truncate);
-  EXPECT_THROW(parseHwConfig(R"({"pipelinez": 4})", "t.json"), std::invalid_argument);
-  EXPECT_THROW(parseHwConfig(R"({"pipelines": 0})", "t.json"), std::invalid_argument);
-  EXPECT_THROW(parseHwConfig(R"({"pipelines": 2.5})", "t.json"), std::invalid_argument);
-  EXPECT_THROW(parseHwConfig(R"({"shading_normalizer": "fast"})", "t.json"), std::invalid_argument);
-  EXPECT_THROW(parseHwConfig(R"({"depth_variant": 1})", "t.json"), std::invalid_argument);
-  EXPECT_EQ(parseHwConfig(R"({"shading_normalizer": "recurrence"})", "t.json").shading_normalizer,
+  EXPECT_THROW(parseHwConfig(R"({"format": "qacc-hw-config/1", "pipelinez": 4})", "t.json"), std::invalid_argument);
+  EXPECT_THROW(parseHwConfig(R"({"format": "qacc-hw-config/1", "pipelines": 0})", "t.json"), std::invalid_argument);
+  EXPECT_THROW(parseHwConfig(R"({"format": "qacc-hw-config/1", "pipelines": 2.5})", "t.json"), std::invalid_argument);
+  EXPECT_THROW(parseHwConfig(R"({"format": "qacc-hw-config/1", "shading_normalizer": "fast"})", "t.json"), std::invalid_argument);
+  EXPECT_THROW(parseHwConfig(R"({"format": "qacc-hw-config/1", "depth_variant": 1})", "t.json"), std::invalid_argument);
+  EXPECT_EQ(parseHwConfig(R"({"format": "qacc-hw-config/1", "shading_normalizer": "recurrence"})", "t.json").shading_normalizer,
             Normalizer::Recurrence);
   // round trip
   const HwConfig d = parseHwConfig(hwConfigToJson(c), "rt.json");
@@ -226,11 +226,46 @@ TEST(FixedPoint, QuantizeCountsPrecisionLoss) {
   EXPECT_EQ(c.events, 0u);
 }
 
-TEST(HwConfig, NamedAfterItsFileAndNarrowWidthsRefusedWithTheReason) {
-  EXPECT_EQ(parseHwConfig(R"({"value_bits": 16})", "dir/narrow16.json").name, "narrow16");
-  EXPECT_EQ(parseHwConfig(R"({"name": "mine", "value_bits": 16})", "dir/narrow16.json").name, "mine");
+// The configuration file is strict like a scene (issue 14): its format is checked and a
+// duplicate key is refused (nlohmann kept the last value silently), with the JSON path.
+TEST(HwConfig, FormatCheckedAndDuplicateKeysRefused) {
+  auto message = [](const std::string& text) {
+    try {
+      parseHwConfig(text, "c.json");
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message(R"({"value_bits": 16})"), "c.json: /: missing \"format\" (expected \"qacc-hw-config/1\")");
+  EXPECT_EQ(message(R"({"format": "qacc-scene/1", "value_bits": 16})"),
+            "c.json: /format: expected \"qacc-hw-config/1\", got \"qacc-scene/1\"");
+  EXPECT_EQ(message(R"({"format": 1})"), "c.json: /format: expected \"qacc-hw-config/1\", got 1");
+  EXPECT_NE(message(R"({"format": "qacc-hw-config/1", "value_bits": 24, "value_bits": 16})").find("c.json: /value_bits: duplicate key"),
+            std::string::npos);
+  EXPECT_NE(message("{\"format\": \"qacc-hw-config/1\",\n \"pipelines\": 2,,}").find("line 2"), std::string::npos);
+  EXPECT_EQ(message(R"({"format": "qacc-hw-config/1", "comment": 3})"), "c.json: /comment: expected a string");
+  EXPECT_EQ(message(R"([1])"), "c.json: /: expected a JSON object");
+}
+
+// unit_frac_bits 28 built a 2^28-entry specular table per material before the first pixel
+// (1 GiB of 32-bit entries); it is refused with the reason before anything is built.
+TEST(HwConfig, SpecularTableAboveTheLimitRefused) {
   try {
-    parseHwConfig(R"({"value_bits": 32, "delta_bits": 40})", "c.json");
+    parseHwConfig(R"({"format": "qacc-hw-config/1", "normal_bits": 30, "unit_frac_bits": 28})", "c.json");
+    FAIL() << "unit_frac_bits 28 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("c.json: /unit_frac_bits: 28 needs a specular table of 2^28 + 1 entries per material, above the limit of 2^20 + 1"),
+              std::string::npos) << e.what();
+  }
+  EXPECT_EQ(parseHwConfig(R"({"format": "qacc-hw-config/1", "normal_bits": 30, "unit_frac_bits": 20})", "c.json").unit_frac_bits, 20);
+}
+
+TEST(HwConfig, NamedAfterItsFileAndNarrowWidthsRefusedWithTheReason) {
+  EXPECT_EQ(parseHwConfig(R"({"format": "qacc-hw-config/1", "value_bits": 16})", "dir/narrow16.json").name, "narrow16");
+  EXPECT_EQ(parseHwConfig(R"({"format": "qacc-hw-config/1", "name": "mine", "value_bits": 16})", "dir/narrow16.json").name, "mine");
+  try {
+    parseHwConfig(R"({"format": "qacc-hw-config/1", "value_bits": 32, "delta_bits": 40})", "c.json");
     FAIL() << "delta_bits 40 with value_bits 32 accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("c.json: /delta_bits: 40 is below 2 value_bits - 8"), std::string::npos) << e.what();
