@@ -2,26 +2,83 @@
 
 #include <chrono>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 namespace qacc {
 
+namespace {
+
+// TessellationOptions::pixel_error and TessellationReport::max/mean_pixel_error come with
+// the view-dependent tessellation (modeling/tessellation); until a build has them a pixel
+// error is refused rather than ignored.
+template <typename T, typename = void>
+struct HasPixelError : std::false_type {};
+template <typename T>
+struct HasPixelError<T, std::void_t<decltype(std::declval<T&>().pixel_error)>> : std::true_type {};
+template <typename T, typename = void>
+struct HasPixelReport : std::false_type {};
+template <typename T>
+struct HasPixelReport<T, std::void_t<decltype(std::declval<T&>().max_pixel_error)>> : std::true_type {};
+
+template <typename T>
+void setPixelError(T& o, double px) {
+  if constexpr (HasPixelError<T>::value)
+    o.pixel_error = px;
+  else
+    throw std::invalid_argument("facets: this build's tessellation has no screen-space tolerance (pixel_error); "
+                                "use --levels");
+}
+
+template <typename T>
+double pixelReport(const T& r, bool mean) {
+  if constexpr (HasPixelReport<T>::value)
+    return mean ? r.mean_pixel_error : r.max_pixel_error;
+  else
+    return (void)r, (void)mean, std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
+TessellationOptions facetTessellationOptions(int level, double pixelError) {
+  TessellationOptions to;
+  to.chord_samples = 2;  // vertices, edge midpoints and the centre region: cheap enough for big scenes
+  if (pixelError > 0) {
+    setPixelError(to, pixelError);
+  } else {
+    if (level < 2) throw std::invalid_argument("facets: --level must be at least 2 (triangles per primitive)");
+    to.triangles = level;
+  }
+  return to;
+}
+
+double achievedMaxPixelError(const TessellationReport& report) { return pixelReport(report, false); }
+double achievedMeanPixelError(const TessellationReport& report) { return pixelReport(report, true); }
+
 FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, int threads, std::size_t max_triangles,
                           TriangleMesh3* meshOut) {
-  if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
   if (level < 2) throw std::invalid_argument("facets: --level must be at least 2 (triangles per primitive)");
   const std::size_t estimate = scene.primitives.size() * std::size_t(level);
   if (estimate > max_triangles)
     throw std::invalid_argument(Limits::exceeded("facets: level " + std::to_string(level) + " for " +
                                                      std::to_string(scene.primitives.size()) + " primitives",
                                                  estimate, "triangles", max_triangles, "max-triangles"));
+  return renderFacetScene(scene, facetTessellationOptions(level, 0), shading, threads, max_triangles, meshOut);
+}
+
+FacetRun renderFacetScene(const Scene& scene, const TessellationOptions& to, FacetShading shading, int threads,
+                          std::size_t max_triangles, TriangleMesh3* meshOut) {
+  if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
   FacetRun run;
   const auto t0 = std::chrono::steady_clock::now();
-  TessellationOptions to;
-  to.triangles = level;
-  to.chord_samples = 2;  // vertices, edge midpoints and the centre region: cheap enough for big scenes
   TriangleMesh3 mesh = tessellateScene(scene, to, &run.tessellation);
   run.tessellate_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (mesh.size() > max_triangles)
+    throw std::invalid_argument(Limits::exceeded("facets: the tessellation of " +
+                                                     std::to_string(scene.primitives.size()) + " primitives",
+                                                 mesh.size(), "triangles", max_triangles, "max-triangles"));
 #ifdef QACC_HAVE_OSMESA
   FacetRenderOptions ro;
   ro.shading = shading;
@@ -58,8 +115,9 @@ bool runFacetEngine(const std::string& engine, const Scene& scene, const EngineO
     out.notes.push_back(buf);
   }
   std::snprintf(buf, sizeof buf,
-                "facets: tessellate %.2f ms, GL setup %.2f ms, draw+finish %.2f ms, read back %.2f ms, id pass %.2f ms",
-                run.tessellate_ms, run.render.setup_ms, run.render.draw_ms, run.render.readback_ms, run.render.id_pass_ms);
+                "facets: tessellate %.2f ms, GL context %.2f ms, upload %.2f ms, draw+finish %.2f ms, read back %.2f ms, "
+                "id pass %.2f ms",
+                run.tessellate_ms, run.render.context_ms, run.render.upload_ms, run.render.draw_ms, run.render.readback_ms, run.render.id_pass_ms);
   out.notes.push_back(buf);
   out.notes.push_back("facets: shading " + std::string(facetShadingName(run.render.shading_used)) + ", GL_RENDERER " +
                       run.render.gl_renderer + ", GL_VERSION " + run.render.gl_version);
