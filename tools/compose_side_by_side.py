@@ -51,12 +51,13 @@ def main():
     qm, tm = q["metrics"], t["metrics"]
     scale = info["luma_error_scale"]
     panel_w = 4.6
-    fig, axes = plt.subplots(2, 3, figsize=(3 * panel_w, 2 * panel_w * h / w + 1.6), dpi=110)
+    fig, axes = plt.subplots(2, 3, figsize=(3 * panel_w, 2 * panel_w * h / w + 2.4), dpi=110,
+                             layout="constrained")
 
     def show(ax, rel, title, **kw):
         img = mpimg.imread(os.path.join(d, rel))
         im = ax.imshow(img, interpolation="nearest", **kw)
-        ax.set_title(title, fontsize=9)
+        ax.set_title(title, fontsize=8)
         ax.set_xticks([])
         ax.set_yticks([])
         return im
@@ -64,11 +65,11 @@ def main():
     tri = "%s triangles, %s" % (thousands(t["triangles"]), t["setting"].replace("eps", "tolerance"))
     show(axes[0][0], info["reference"]["image"], "Reference\n(exact ray casting: the truth)")
     show(axes[0][1], q["image"],
-         "Quadrics on the accelerator (hw)\n%s, %s; %s cycles; silhouette %.2f px" %
+         "Quadrics on the accelerator (hw)\n%s, %s\n%s cycles; silhouette error %.2f px" %
          (q["engine"].split(", ")[-1], q["config"], thousands(q["cycles"]), num(qm["silhouette_hausdorff_px"])))
     show(axes[0][2], t["image"],
-         "Triangles (%s)\n%s; silhouette %.2f px" % (t["engine"].replace("triangles via ", ""), tri,
-                                                    num(tm["silhouette_hausdorff_px"])))
+         "Triangles: %s\n%s\nsilhouette error %.2f px" % (tri, t["engine"].replace("triangles via ", ""),
+                                                         num(tm["silhouette_hausdorff_px"])))
     # Luma errors: 8-bit |dY| levels stored as gray (imread gives 0..1).
     vmax = scale["max"] / 255.0
     kw = dict(cmap="inferno", vmin=0, vmax=vmax)
@@ -76,8 +77,7 @@ def main():
               (db(qm["psnr_db"]), num(qm["ssim"])), **kw)
     show(axes[1][1], t["error_image"], "Luma error of the triangles\nPSNR %s, SSIM %.4f" %
          (db(tm["psnr_db"]), num(tm["ssim"])), **kw)
-    cb = fig.colorbar(im, ax=[axes[1][0], axes[1][1]], orientation="horizontal", fraction=0.05, pad=0.04,
-                      aspect=50)
+    cb = fig.colorbar(im, ax=[axes[1][0], axes[1][1]], orientation="horizontal", fraction=0.05, aspect=50)
     ticks = [0, 16, 32, 48, 64]
     cb.set_ticks([v / 255.0 for v in ticks])
     cb.set_ticklabels([str(v) if v < scale["max"] else "%d+" % v for v in ticks])
@@ -86,8 +86,8 @@ def main():
          "Coverage errors of the triangles\n%s wrong object, %s pinhole, %s spurious px" %
          (thousands(tm["wrong_object_px"]), thousands(tm["pinholes_px"]), thousands(tm["spurious_px"])))
     cols = info["coverage_colours"]
-    axes[1][2].legend(handles=[Patch(color=c, label=k) for k, c in cols.items()], loc="lower right", fontsize=7,
-                      framealpha=0.8)
+    axes[1][2].legend(handles=[Patch(color=c, label=k) for k, c in cols.items()], loc="upper center",
+                      bbox_to_anchor=(0.5, -0.02), ncol=3, fontsize=7, frameon=False)
     fig.suptitle("%s, %dx%d: quadrics on the accelerator against triangles (qacc %s)" %
                  (info["scene"], w, h, info["qacc_version"]), fontsize=11)
     fig.savefig(os.path.join(d, "side_by_side.png"))

@@ -2,51 +2,16 @@
 
 #include <chrono>
 #include <cstdio>
-#include <limits>
 #include <stdexcept>
-#include <type_traits>
 #include <utility>
 
 namespace qacc {
-
-namespace {
-
-// TessellationOptions::pixel_error and TessellationReport::max/mean_pixel_error come with
-// the view-dependent tessellation (modeling/tessellation); until a build has them a pixel
-// error is refused rather than ignored.
-template <typename T, typename = void>
-struct HasPixelError : std::false_type {};
-template <typename T>
-struct HasPixelError<T, std::void_t<decltype(std::declval<T&>().pixel_error)>> : std::true_type {};
-template <typename T, typename = void>
-struct HasPixelReport : std::false_type {};
-template <typename T>
-struct HasPixelReport<T, std::void_t<decltype(std::declval<T&>().max_pixel_error)>> : std::true_type {};
-
-template <typename T>
-void setPixelError(T& o, double px) {
-  if constexpr (HasPixelError<T>::value)
-    o.pixel_error = px;
-  else
-    throw std::invalid_argument("facets: this build's tessellation has no screen-space tolerance (pixel_error); "
-                                "use --levels");
-}
-
-template <typename T>
-double pixelReport(const T& r, bool mean) {
-  if constexpr (HasPixelReport<T>::value)
-    return mean ? r.mean_pixel_error : r.max_pixel_error;
-  else
-    return (void)r, (void)mean, std::numeric_limits<double>::quiet_NaN();
-}
-
-}  // namespace
 
 TessellationOptions facetTessellationOptions(int level, double pixelError) {
   TessellationOptions to;
   to.chord_samples = 2;  // vertices, edge midpoints and the centre region: cheap enough for big scenes
   if (pixelError > 0) {
-    setPixelError(to, pixelError);
+    to.pixel_error = pixelError;
   } else {
     if (level < 2) throw std::invalid_argument("facets: --level must be at least 2 (triangles per primitive)");
     to.triangles = level;
@@ -54,8 +19,8 @@ TessellationOptions facetTessellationOptions(int level, double pixelError) {
   return to;
 }
 
-double achievedMaxPixelError(const TessellationReport& report) { return pixelReport(report, false); }
-double achievedMeanPixelError(const TessellationReport& report) { return pixelReport(report, true); }
+double achievedMaxPixelError(const TessellationReport& report) { return report.max_pixel_error; }
+double achievedMeanPixelError(const TessellationReport& report) { return report.mean_pixel_error; }
 
 FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, int threads, std::size_t max_triangles,
                           TriangleMesh3* meshOut) {
