@@ -81,6 +81,9 @@ ComparePlan planCompare(const CompareOptions& o) {
   if (!o.sizes.empty()) {
     if (o.width || o.height)
       throw std::invalid_argument("--sizes and --width/--height exclude each other (--sizes renders every size)");
+    if (o.no_facet_cycles)
+      throw std::invalid_argument("--sizes needs the facet-path cycles (the crossover compares cycles): drop "
+                                  "--no-facet-cycles");
     p.sizes = parseSizes(o.sizes);
   }
   p.shading = parseFacetShading(o.shading);
