@@ -80,6 +80,9 @@ TEST(EqualErrorPoint, AZeroTargetFallsBackToTheLinearScale) {
   const EqualErrorPoint p = equalErrorPoint({{100, 2}, {200, 1}, {400, 0}}, 0, false, ErrorScale::Log);
   ASSERT_EQ(p.status, EqualErrorStatus::Interpolated);
   EXPECT_DOUBLE_EQ(p.cost, 400);
+  // 110 → 51 pixels would reach 0 within a step on a straight line, but no power law does.
+  EXPECT_EQ(equalErrorPoint({{13769, 110}, {40690, 51}}, 0, false, ErrorScale::Log).status,
+            EqualErrorStatus::NotReached);
 }
 
 TEST(EqualErrorPoint, UnmeasuredSettingsAreSkippedAndNothingMeasuredIsRefused) {

@@ -87,6 +87,11 @@ EqualErrorPoint equalErrorPoint(const std::vector<MeasuredError>& measured, doub
   p.lo = idx[idx.size() - 2];
   p.hi = idx.back();
   if (!(measured[p.hi].cost > measured[p.lo].cost)) return p;
+  // Only on the metric's own scale: a power law never reaches an error of 0, so a zero target
+  // (or a zero error) is not extrapolated by the linear fallback.
+  if (!std::isfinite(onScale(measured[p.lo].error, scale)) || !std::isfinite(onScale(measured[p.hi].error, scale)) ||
+      !std::isfinite(onScale(target, scale)))
+    return p;
   const double t = crossing(measured[p.lo].error, measured[p.hi].error, target, scale);
   if (std::isfinite(t) && t > 1 && t <= 2) {
     p.status = EqualErrorStatus::Extrapolated;

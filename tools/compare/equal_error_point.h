@@ -3,7 +3,8 @@
 // two measured settings, interpolated in log cost — error ∝ cost^b for lower-better errors
 // (linear when an error or the target is 0), PSNR linear in log cost, 1 − SSIM ∝ cost^b —
 // and never more than one step (the ratio of the two finest costs) beyond the finest
-// measured; beyond that it is "not reached" and the finest measured is the answer given.
+// measured; beyond that it is "not reached" and the finest measured is the answer given. A
+// target of 0 (or a measured 0) is interpolated linearly but never extrapolated.
 #pragma once
 #include <cstddef>
 #include <string>
