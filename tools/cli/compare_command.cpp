@@ -15,7 +15,7 @@
 //    reached", with the finest measured);
 //  - equal cost: the facets' errors at the accelerator's primitive count, modeled cycles
 //    and host time (hw's frame against llvmpipe's draw alone; the nearest setting, log scale);
-//  - with --sizes, the crossover: the same view at every size, facet cycles over quadric
+//  - with --sizes, instead, the crossover: the same view at every size, facet cycles over quadric
 //    cycles at equal silhouette error against the mean projected primitive size
 //    (compare/crossover.h; plots: tools/plot_crossover.py).
 // Objects with an exact surface (algebraic surfaces) are ray-cast exactly by the reference,

@@ -18,6 +18,10 @@ namespace qacc::compare {
 void runCompare(const CompareOptions& o) {
   namespace fs = std::filesystem;
   const ComparePlan plan = planCompare(o);
+  if (!plan.sizes.empty()) {  // the crossover instead of the comparison at one size
+    runCrossover(plan, o);
+    return;
+  }
   const QuadricRuns quadrics = renderQuadrics(plan, o.threads);
   const FacetRuns facets = renderFacetLevels(plan, o, quadrics.ref);
 
@@ -44,7 +48,6 @@ void runCompare(const CompareOptions& o) {
   if (!composed.empty())
     std::printf("note: side_by_side.png not composed: %s (run tools/compose_side_by_side.py %s)\n", composed.c_str(),
                 o.out_dir.c_str());
-  if (!plan.sizes.empty()) runCrossover(plan, o);
 }
 
 }  // namespace qacc::compare

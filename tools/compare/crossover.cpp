@@ -14,6 +14,7 @@
 #include "tools/compare/quadric_runs.h"
 #include "tools/compare/report_files.h"
 #include "tools/report/build_info.h"
+#include "tools/report/python_tool.h"
 
 namespace qacc::compare {
 
@@ -184,8 +185,12 @@ void runCrossover(const ComparePlan& plan, const CompareOptions& o) {
   }
   writeText((fs::path(o.out_dir) / "crossover.json").string(), out.dump(2) + "\n");
   writeText((fs::path(o.out_dir) / "crossover.csv").string(), csv.str());
-  std::printf("wrote %s/{crossover.json, crossover.csv} (plot: tools/plot_crossover.py %s)\n", o.out_dir.c_str(),
-              o.out_dir.c_str());
+  const std::string plotted = runPythonTool("plot_crossover.py", o.out_dir);
+  std::printf("wrote %s/{crossover.json, crossover.csv%s}\n", o.out_dir.c_str(),
+              plotted.empty() ? ", crossover.png, crossover.svg" : "");
+  if (!plotted.empty())
+    std::printf("note: crossover plot not drawn: %s (run tools/plot_crossover.py %s)\n", plotted.c_str(),
+                o.out_dir.c_str());
 }
 
 }  // namespace qacc::compare

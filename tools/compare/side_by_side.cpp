@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
 
 #include "raster/image/heat_map.h"
@@ -12,6 +11,7 @@
 #include "tools/compare/number_format.h"
 #include "tools/compare/report_files.h"
 #include "tools/report/build_info.h"
+#include "tools/report/python_tool.h"
 
 namespace qacc::compare {
 
@@ -101,16 +101,6 @@ void writeSideBySidePanels(const std::string& dir, const SideBySideInfo& info, c
   writeText((fs::path(dir) / "side_by_side.json").string(), j.dump(2) + "\n");
 }
 
-std::string composeSideBySide(const std::string& dir) {
-  const std::string script = qaccToolsDir() + "/compose_side_by_side.py";
-  if (!std::filesystem::exists(script)) return script + " not found";
-  // Debian's python3-matplotlib belongs to the system interpreter (a python3 earlier on PATH,
-  // e.g. pyenv's, may not have it).
-  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  const std::string cmd = python + " '" + script + "' '" + dir + "' > /dev/null";
-  const int rc = std::system(cmd.c_str());
-  if (rc != 0) return "python3 " + script + " failed (exit " + std::to_string(rc) + "; needs python3-matplotlib)";
-  return "";
-}
+std::string composeSideBySide(const std::string& dir) { return runPythonTool("compose_side_by_side.py", dir); }
 
 }  // namespace qacc::compare
