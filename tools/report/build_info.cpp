@@ -1,5 +1,7 @@
 #include "tools/report/build_info.h"
 
+#include "qacc_version.h"  // generated at every build (tools/report/version.cmake)
+
 #ifndef QACC_GIT_VERSION
 #define QACC_GIT_VERSION "unknown"
 #endif

@@ -1,5 +1,5 @@
 // Facts about this build of qacc for self-describing outputs and helper scripts: its version
-// (`git describe --always --dirty` of the source tree when CMake was configured) and the
+// (`git describe --always --dirty` of the source tree at build time) and the
 // source tree's tools/ folder (where the plotting and composing scripts are).
 #pragma once
 #include <string>
