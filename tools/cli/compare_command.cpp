@@ -21,7 +21,8 @@
 // Objects with an exact surface (algebraic surfaces) are ray-cast exactly by the reference,
 // drawn as their quadric pieces by the accelerator and as triangles of the true surface by
 // the facets (modeling/tessellation.h), so both approximations are measured against the truth.
-// Writes DIR/compare.json, DIR/compare.csv, DIR/side_by_side.png (top: reference | quadrics |
+// Writes DIR/compare.json, DIR/compare.csv, DIR/side_by_side.png (composed with labels by
+// tools/compose_side_by_side.py from DIR/panels/ and DIR/side_by_side.json; top: reference | quadrics |
 // facets; bottom: luma-error heat maps of quadrics and facets | the facets' coverage errors) and SVG plots of every
 // metric against triangles and against modeled cycles (DIR/error_vs_triangles.svg,
 // DIR/error_vs_cycles.svg), drawn by tools/report/svg_plot.h.
