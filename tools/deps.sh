@@ -11,7 +11,7 @@ QACC_PACKAGES=(
   libopencsg-dev libglew-dev         # CSG of triangles (OpenCSG, which calls GL through GLEW)
   pymol-data                         # real PDB files for the molecule scene
   python3                            # tools/behaviour_check, plots
-  python3-matplotlib                 # tools/plot_sweep.py: the plots of qacc sweep
+  python3-matplotlib                 # tools/plot_sweep.py, plot_crossover.py, compose_side_by_side.py: sweep and compare figures
   parallel                           # GNU parallel: sweep shards (README, tests)
 )
 

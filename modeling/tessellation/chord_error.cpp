@@ -7,7 +7,7 @@
 
 namespace qacc {
 
-double distanceToQuadric(const Quadric& quadric, const Vector3d& p) {
+Vector3d closestPointOnQuadric(const Quadric& quadric, const Vector3d& p) {
   const Quadric q = quadric.normalized();
   Vector3d x = p;
   for (int it = 0; it < 30; ++it) {
@@ -19,8 +19,10 @@ double distanceToQuadric(const Quadric& quadric, const Vector3d& p) {
     x -= step;
     if (step.norm() <= 1e-14 * (1.0 + x.norm())) break;
   }
-  return (x - p).norm();
+  return x;
 }
+
+double distanceToQuadric(const Quadric& quadric, const Vector3d& p) { return (closestPointOnQuadric(quadric, p) - p).norm(); }
 
 ChordError measureChordError(const TriangleMesh3& mesh, const Quadric& quadric, std::size_t first, std::size_t count,
                              int subdivisions) {

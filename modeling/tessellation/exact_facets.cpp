@@ -1,16 +1,23 @@
 #include "modeling/tessellation/exact_facets.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 
 namespace qacc::tess {
 
-ExactSurfaceMesh tessellateExact(const ExactSurface& surface, std::size_t pieces, const TessellationOptions& options) {
+ExactSurfaceMesh tessellateExact(const ExactSurface& surface, std::size_t pieces, const TessellationOptions& options,
+                                 const ScreenView* view) {
   pieces = std::max<std::size_t>(pieces, 1);
-  if (options.chord_error <= 0) return surface.tessellate(std::size_t(std::max(2, options.triangles)) * pieces);
+  double bound = options.chord_error;
+  if (options.pixel_error > 0) {
+    if (!view) throw std::invalid_argument("tessellation: pixel_error needs the scene's view");
+    bound = options.pixel_error / view->maxPixelsPerUnit(surface.bounds());
+  }
+  if (bound <= 0) return surface.tessellate(std::size_t(std::max(2, options.triangles)) * pieces);
   std::size_t budget = 64 * pieces;
   ExactSurfaceMesh m = surface.tessellate(budget);
-  while (m.max_error > options.chord_error && 4 * budget <= std::size_t(options.max_triangles) * pieces) {
+  while (m.max_error > bound && 4 * budget <= std::size_t(options.max_triangles) * pieces) {
     budget *= 4;
     ExactSurfaceMesh finer = surface.tessellate(budget);
     const bool same = finer.grid == m.grid;  // the finest grid is reached

@@ -8,12 +8,17 @@
 #include <cstddef>
 
 #include "modeling/geometry/exact_surface.h"
+#include "modeling/tessellation/screen_error.h"
 #include "modeling/tessellation/tessellation.h"
 
 namespace qacc::tess {
 
-// The triangles of an object's exact surface, at the budget of `pieces` quadric pieces.
-ExactSurfaceMesh tessellateExact(const ExactSurface& surface, std::size_t pieces, const TessellationOptions& options);
+// The triangles of an object's exact surface, at the budget of `pieces` quadric pieces; with
+// options.pixel_error, the budget quadrupled until the measured distance to the surface
+// times the largest pixels per world unit over its bounds is at most the bound (`view`
+// required then).
+ExactSurfaceMesh tessellateExact(const ExactSurface& surface, std::size_t pieces, const TessellationOptions& options,
+                                 const ScreenView* view = nullptr);
 
 // The object's exact surface as a facet mesh: every triangle tagged with the object, the
 // material and the primitive (the object's first piece) it stands for.

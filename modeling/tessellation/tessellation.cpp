@@ -7,14 +7,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
+#include "modeling/geometry/primitive_bounds.h"
 #include "modeling/geometry/quadric_type.h"
 #include "modeling/tessellation/clip_region.h"
 #include "modeling/tessellation/exact_facets.h"
 #include "modeling/tessellation/marching_piece.h"
 #include "modeling/tessellation/parametric_grid.h"
 #include "modeling/tessellation/quadric_frame.h"
+#include "modeling/tessellation/screen_error.h"
 #include "modeling/tessellation/solid_caps.h"
 #include "modeling/tessellation/surface_builder.h"
 
@@ -121,10 +124,43 @@ PrimitiveTessellation tessellateCovering(const Primitive& prim, int target, cons
   return t;
 }
 
+void checkOptions(const TessellationOptions& options) {
+  if (options.chord_error > 0 && options.pixel_error > 0)
+    throw std::invalid_argument("tessellation: chord_error and pixel_error are exclusive (both > 0)");
+  if (!(options.pixel_error >= 0) || !std::isfinite(options.pixel_error))
+    throw std::invalid_argument("tessellation: pixel_error must be a finite number >= 0");
+}
+
+// pixel_error mode: refined until the measured projected chord error is at most the bound.
+PrimitiveTessellation tessellateToPixels(const Primitive& prim, const TessellationOptions& options,
+                                         const Camera* camera, double aspect, const ScreenView& view) {
+  const PrimitiveBounds bounds = primitiveBounds(prim);
+  int target = 8;
+  auto measured = [&](PrimitiveTessellation t) {
+    const PixelError pe = measurePixelError(t.mesh, prim.quadric, view, 0, t.surface_triangles, options.chord_samples);
+    t.max_pixel_error = pe.max;
+    t.mean_pixel_error = pe.mean;
+    return t;
+  };
+  PrimitiveTessellation t = measured(tessellateCovering(prim, target, camera, aspect, options.chord_samples));
+  if (bounds.empty || (bounds.bounded && !view.boxOnScreen(bounds.box, 2.0))) return t;  // off screen: coarsest
+  while (t.max_pixel_error > options.pixel_error && t.method != TessellationMethod::Planar &&
+         t.method != TessellationMethod::Empty && target * 2 <= options.max_triangles) {
+    target *= 2;
+    t = measured(tessellateCovering(prim, target, camera, aspect, options.chord_samples));
+  }
+  return t;
+}
+
 }  // namespace
 
 PrimitiveTessellation tessellatePrimitive(const Primitive& prim, const TessellationOptions& options,
-                                          const Camera* camera, double aspect) {
+                                          const Camera* camera, double aspect, const ScreenView* view) {
+  checkOptions(options);
+  if (options.pixel_error > 0) {
+    if (!view) throw std::invalid_argument("tessellation: pixel_error needs the scene's view");
+    return tessellateToPixels(prim, options, camera, aspect, *view);
+  }
   if (options.chord_error <= 0)
     return tessellateCovering(prim, std::max(2, options.triangles), camera, aspect, options.chord_samples);
   int target = 8;
@@ -138,10 +174,12 @@ PrimitiveTessellation tessellatePrimitive(const Primitive& prim, const Tessellat
 }
 
 TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& options, TessellationReport* report) {
+  checkOptions(options);
   TriangleMesh3 all;
   TessellationReport rep;
   const double aspect = double(scene.width) / double(scene.height);
-  double meanSum = 0;
+  const ScreenView view(scene.camera, scene.width, scene.height);
+  double meanSum = 0, pixelMeanSum = 0;
   std::size_t measured = 0;
   std::vector<bool> exactDone(scene.exact_surfaces.size(), false);
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
@@ -153,7 +191,13 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
       // The object's true surface replaces its pieces, drawn once at its first piece.
       if (exactDone[std::size_t(e)]) continue;
       exactDone[std::size_t(e)] = true;
-      ExactSurfaceMesh em = tess::tessellateExact(*scene.exact_surfaces[std::size_t(e)], object->count, options);
+      const ExactSurface& surface = *scene.exact_surfaces[std::size_t(e)];
+      ExactSurfaceMesh em = tess::tessellateExact(surface, object->count, options, &view);
+      if (options.pixel_error > 0) {
+        const double px = em.max_error * view.maxPixelsPerUnit(surface.bounds());
+        rep.max_pixel_error = std::max(rep.max_pixel_error, px);
+        pixelMeanSum += em.mean_error * view.maxPixelsPerUnit(surface.bounds());
+      }
       const TriangleMesh3 t = tess::exactSurfaceFacets(std::move(em), p.object, p.material, int(i));
       const std::size_t n = t.size();
       all.append(t);
@@ -166,7 +210,7 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
       ++measured;
       continue;
     }
-    PrimitiveTessellation t = tessellatePrimitive(p, options, &scene.camera, aspect);
+    PrimitiveTessellation t = tessellatePrimitive(p, options, &scene.camera, aspect, &view);
     const std::size_t n = t.mesh.size();
     t.mesh.object.assign(n, p.object);
     t.mesh.material.assign(n, p.material);
@@ -183,9 +227,12 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
     }
     rep.max_chord_error = std::max(rep.max_chord_error, t.max_chord_error);
     meanSum += t.mean_chord_error;
+    rep.max_pixel_error = std::max(rep.max_pixel_error, t.max_pixel_error);
+    pixelMeanSum += t.mean_pixel_error;
     ++measured;
   }
   rep.mean_chord_error = measured ? meanSum / double(measured) : 0.0;
+  rep.mean_pixel_error = measured ? pixelMeanSum / double(measured) : 0.0;
   if (report) *report = rep;
   return all;
 }

@@ -58,6 +58,10 @@ struct TriangleMesh3 {
 struct TessellationOptions {
   int triangles = 128;      // target surface triangles per primitive (>= 2)
   double chord_error = 0;   // > 0: refine until the chord error is at most this (world units)
+  // > 0: every primitive tessellated so that its projected chord error is at most this many
+  // pixels in the scene's view (camera, scene.width x scene.height); `triangles` is ignored.
+  // Exclusive with chord_error.
+  double pixel_error = 0;
   int max_triangles = 1 << 20;  // cap per primitive when refining by chord error
   int chord_samples = 6;    // barycentric subdivisions per triangle edge when measuring chord error
 };
@@ -72,6 +76,8 @@ struct PrimitiveTessellation {
   std::size_t cap_triangles = 0;
   double max_chord_error = 0;   // world units, measured (see measureChordError)
   double mean_chord_error = 0;
+  double max_pixel_error = 0;   // pixels, measured in the view (pixel_error mode; screen_error.h)
+  double mean_pixel_error = 0;
 };
 
 struct TessellationReport {
@@ -84,12 +90,20 @@ struct TessellationReport {
   int exact_grid = 0;           // finest marching-tetrahedra grid used for them (cubes per axis)
   double max_chord_error = 0;   // over all primitives and exact surfaces, world units
   double mean_chord_error = 0;  // mean over primitives and exact surfaces of their mean
+  // pixel_error mode: the achieved projected chord error in pixels, measured (not the bound),
+  // over all primitives and exact surfaces (max, and mean over them of their mean).
+  double max_pixel_error = 0, mean_pixel_error = 0;
 };
 
+class ScreenView;
+
 // `frustum` bounds unbounded pieces (pass the scene camera); may be null for bounded ones.
+// `view` is required when options.pixel_error > 0 (the scene's camera and image size).
 PrimitiveTessellation tessellatePrimitive(const Primitive& prim, const TessellationOptions& options,
-                                          const Camera* camera = nullptr, double aspect = 4.0 / 3.0);
-// Whole scene: per-triangle object/material/primitive indices filled in.
+                                          const Camera* camera = nullptr, double aspect = 4.0 / 3.0,
+                                          const ScreenView* view = nullptr);
+// Whole scene: per-triangle object/material/primitive indices filled in. Options are
+// checked first (std::invalid_argument naming them: chord_error and pixel_error both > 0).
 TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& options,
                               TessellationReport* report = nullptr);
 
@@ -103,6 +117,8 @@ ChordError measureChordError(const TriangleMesh3& mesh, const Quadric& quadric, 
                              std::size_t count = std::size_t(-1), int subdivisions = 6);
 // Distance from p to the quadric surface (Newton projection along the gradient).
 double distanceToQuadric(const Quadric& quadric, const Eigen::Vector3d& p);
+// The surface point that projection reaches from p.
+Eigen::Vector3d closestPointOnQuadric(const Quadric& quadric, const Eigen::Vector3d& p);
 
 // Every undirected edge (vertices identified by exact position) is used by exactly two
 // triangles, and no triangle is degenerate.

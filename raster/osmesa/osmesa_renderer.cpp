@@ -417,6 +417,8 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
   ContextGuard guard;
   std::vector<float> rgba;
   createContext(guard, rgba, W, H, options.threads, res);
+  res.context_ms = msSince(tSetup);
+  const auto tUpload = Clock::now();
 
   ShaderApi api;
   const bool apiLoaded = api.load();
@@ -443,7 +445,12 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
   const Eigen::Vector3d bgLinear = scene.background;
   glClearColor(GLfloat(bgLinear.x()), GLfloat(bgLinear.y()), GLfloat(bgLinear.z()), 0.0f);
   glClearDepth(1.0);
-  res.setup_ms = msSince(tSetup);
+  if (va.count >= 3) {  // warm-up: llvmpipe compiles the state's shaders at the first draw
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glFinish();
+  }
+  res.upload_ms = msSince(tUpload);
 
   // Colour pass.
   const auto tDraw = Clock::now();

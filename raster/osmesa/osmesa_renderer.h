@@ -38,11 +38,14 @@ struct FacetRenderResult {
   FacetShading shading_used = FacetShading::Gouraud;
   std::string note;         // e.g. why per-pixel shading fell back to Gouraud
   std::size_t triangles = 0;
-  double setup_ms = 0;      // context creation, shading of vertices, array set-up
-  double draw_ms = 0;       // colour pass: draw calls + glFinish
+  // Host times, each apart, so the draw can be compared alone:
+  double context_ms = 0;    // OSMesa context and buffers created and made current
+  double upload_ms = 0;     // shading of vertices, arrays, GL state, shader program, and a
+                            // one-triangle warm-up draw (llvmpipe compiles the state's code)
+  double draw_ms = 0;       // colour pass: draw calls + glFinish (the draw alone)
   double readback_ms = 0;   // colour + depth read back, sRGB encoding
   double id_pass_ms = 0;    // id pass: draw + glFinish + read back
-  double totalMs() const { return setup_ms + draw_ms + readback_ms + id_pass_ms; }
+  double totalMs() const { return context_ms + upload_ms + draw_ms + readback_ms + id_pass_ms; }
 };
 
 #ifdef QACC_HAVE_OSMESA

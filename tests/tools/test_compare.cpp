@@ -135,12 +135,20 @@ TEST(CompareCommand, GalleryWritesFilesAndCrossoverTable) {
   EXPECT_LT(j["rows"][1]["primitives"].get<long long>(), j["rows"][2]["primitives"].get<long long>());
   EXPECT_GT(j["rows"][2]["cycles"].get<long long>(), 0);
   ASSERT_EQ(j["equal_error"].size(), 6u);
+  // Equal error is interpolated between measured settings (or at most one step beyond):
+  // the settings it names are among the rows.
   for (const auto& e : j["equal_error"]) {
     ASSERT_TRUE(e.contains("reached"));
-    if (e["reached"].get<bool>()) {
-      EXPECT_TRUE(e["level"] == 8 || e["level"] == 64);
-    }
+    ASSERT_TRUE(e.contains("status"));
+    if (e["status"] != "not_reached")
+      for (const auto& s : e["between"]) EXPECT_TRUE(s == "level 8" || s == "level 64") << s;
+    else
+      EXPECT_EQ(e["finest_setting"], "level 64");
   }
+  EXPECT_TRUE(j["equal_cost"].contains("draw_ms"));  // the draw alone, context and upload apart
+  EXPECT_GT(j["rows"][1]["context_ms"].get<double>(), 0);
+  EXPECT_TRUE(fs::exists(out / "side_by_side.json"));
+  EXPECT_TRUE(fs::exists(out / "panels" / "facets_luma_error.png"));
   EXPECT_TRUE(j["equal_cost"].contains("primitives"));
   EXPECT_NE(j["gl_renderer"].get<std::string>().find("llvmpipe"), std::string::npos);
   // The accelerator's own quadrics beat the coarsest facets on PSNR.
@@ -148,7 +156,7 @@ TEST(CompareCommand, GalleryWritesFilesAndCrossoverTable) {
   std::ifstream cf(out / "compare.csv");
   int lines = 0;
   for (std::string l; std::getline(cf, l);) ++lines;
-  EXPECT_EQ(lines, 4);
+  EXPECT_EQ(lines, 5);  // the description line, the header, hw and 2 levels
 }
 
 TEST(CompareCommand, RefusesAnImageOverTheSizeLimit) {

@@ -19,7 +19,7 @@
 #include "hw_model/report/stats_file.h"
 #include "raster/metrics/psnr.h"
 #include "tools/cli/commands.h"
-#include "tools/cli/int_list_option.h"
+#include "tools/cli/list_option.h"
 #include "tools/cli/limit_options.h"
 #include "tools/engines/engine.h"
 

@@ -1,8 +1,9 @@
 // One measured run of the comparison: the accelerator on the quadrics, or the facets at one
-// tessellation level — its size, times, modeled cycles, image and errors.
+// tessellation setting (a tolerance in pixels or a level) — its size, times, modeled cycles, image and errors.
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <sstream>
 #include <string>
 
 #include "raster/image/frame_buffer.h"
@@ -12,10 +13,14 @@ namespace qacc::compare {
 
 struct Row {
   std::string engine;  // "hw" or "facets"
-  int level = 0;
+  int level = 0;               // facets by level: triangles per primitive (0: by tolerance)
+  double tolerance_px = 0;     // facets by tolerance: projected chord error asked, pixels (0: by level)
+  double achieved_px = 0;      // facets by tolerance: max projected chord error achieved (tessellation's own measure)
   std::size_t primitives = 0;  // quadrics or triangles
   double host_ms = 0;          // total host time of the engine (facets: tessellation + GL)
-  double draw_ms = 0;          // facets: GL draw + glFinish of the colour pass only
+  double draw_ms = 0;          // facets: GL draw + glFinish of the colour pass only (hw: host_ms)
+  double context_ms = 0;       // facets: OSMesa context creation
+  double upload_ms = 0;        // facets: vertex shading, arrays, state, warm-up draw
   double gl_ms = 0;            // facets: everything OSMesa did (context, arrays, both passes, read back)
   double tess_ms = 0;          // facets: tessellation (incl. chord-error measurement)
   std::uint64_t cycles = 0;    // modeled cycles (0 = not measured)
@@ -24,6 +29,13 @@ struct Row {
   int exact_grid = 0;          // facets: marching grid of the exact surfaces (cubes per axis, 0 = none)
   Metrics m;
   FrameBuffer fb;
+  std::string setting() const {  // "hw", "eps 0.5 px" or "level 128"
+    if (engine != "facets") return engine;
+    if (level > 0) return "level " + std::to_string(level);
+    std::ostringstream s;
+    s << "eps " << tolerance_px << " px";
+    return s.str();
+  }
 };
 
 }  // namespace qacc::compare

@@ -1,5 +1,7 @@
-// The equal-cost table: the facet level nearest (in log scale) to the accelerator's
-// primitive count, modeled cycles and host time, with both sides' errors. Printed on stdout
+// The equal-cost table: the facet setting nearest (in log scale) to the accelerator's
+// primitive count, modeled cycles (facet path against quadric path on the same accelerator)
+// and host time (hw's frame against llvmpipe's draw alone: GL context creation, upload and
+// tessellation are timed apart), with both sides' errors. Printed on stdout
 // and returned as the report's "equal_cost" object.
 #pragma once
 #include <vector>

@@ -1,83 +1,80 @@
 #include "tools/compare/equal_error.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-#include "tools/compare/image_metrics.h"
 #include "tools/compare/number_format.h"
 
 namespace qacc::compare {
 
+ErrorScale errorScale(const MetricDef& d) {
+  const std::string k = d.key;
+  if (k == "psnr_db") return ErrorScale::Linear;
+  if (k == "ssim") return ErrorScale::OneMinusLog;
+  return ErrorScale::Log;
+}
+
+EqualErrorPoint equalErrorOf(const MetricDef& d, const Row& hw, const std::vector<Row>& facets) {
+  std::vector<MeasuredError> m;
+  for (const auto& r : facets) m.push_back({double(r.primitives), d.get(r.m)});
+  return equalErrorPoint(m, d.get(hw.m), d.higher_better, errorScale(d));
+}
+
+double rowValueAt(const EqualErrorPoint& p, const std::vector<Row>& facets, double (*get)(const Row&)) {
+  std::vector<double> v;
+  for (const auto& r : facets) {
+    const double x = get(r);
+    v.push_back(x > 0 ? x : NAN);
+  }
+  return atPoint(p, v);
+}
+
 nlohmann::json equalErrorTable(const Row& hw, const std::vector<Row>& facets) {
   nlohmann::json jEqual = nlohmann::json::array();
-  std::printf("\nequal error: smallest tessellation no worse than the accelerator (%zu quadrics, %.1f ms host, %llu cycles)\n",
-              hw.primitives, hw.host_ms, (unsigned long long)hw.cycles);
-  std::printf("%-24s %10s %10s %6s %9s %8s %11s %11s %8s\n", "metric", "hw", "facets", "level", "triangles",
-              "tri/quad", "llvmpipe_ms", "facet_cyc", "cyc_ratio");
+  std::printf("\nequal error: smallest tessellation that reaches the accelerator (%zu quadrics, %llu cycles, "
+              "%.1f ms host), interpolated between measured settings (at most one step beyond the finest)\n",
+              hw.primitives, (unsigned long long)hw.cycles, hw.host_ms);
+  std::printf("%-24s %10s %-22s %11s %9s %12s %9s %9s  %s\n", "metric", "hw", "status", "triangles", "tri/quad",
+              "facet_cyc", "cyc_ratio", "draw_ms", "between settings");
   for (const auto& d : metricDefs()) {
     const double hv = d.get(hw.m);
-    int at = -1;
-    for (std::size_t i = 0; i < facets.size(); ++i)
-      if (noWorse(d, d.get(facets[i].m), hv)) {
-        at = int(i);
-        break;
-      }
+    const EqualErrorPoint p = equalErrorOf(d, hw, facets);
     nlohmann::json j;
     j["metric"] = d.key;
     j["hw"] = jnum(hv);
-    if (at < 0) {
-      double best = d.higher_better ? -1e300 : 1e300;
-      for (const auto& r : facets) best = d.higher_better ? std::max(best, d.get(r.m)) : std::min(best, d.get(r.m));
-      // Extrapolation from the two finest levels: error ∝ N^b (lower-better metrics),
-      // 1 − SSIM ∝ N^b, PSNR linear in log N.
-      double extra = NAN;
-      if (facets.size() >= 2) {
-        const Row& a = facets[facets.size() - 2];
-        const Row& b = facets.back();
-        auto tr = [&](double v) {
-          if (d.key == std::string("psnr_db")) return v;
-          if (d.key == std::string("ssim")) return std::log(std::max(1e-300, 1 - v));
-          return v > 0 ? std::log(v) : NAN;
-        };
-        const double ya = tr(d.get(a.m)), yb = tr(d.get(b.m)), yt = tr(hv);
-        const double xa = std::log(double(a.primitives)), xb = std::log(double(b.primitives));
-        if (std::isfinite(ya) && std::isfinite(yb) && std::isfinite(yt) && xb > xa && yb != ya) {
-          const double slope = (yb - ya) / (xb - xa);
-          const bool improving = d.higher_better && d.key == std::string("psnr_db") ? slope > 0 : slope < 0;
-          if (improving) extra = std::exp(xb + (yt - yb) / slope);
-          if (extra > 1e12) extra = INFINITY;
-        }
-      }
-      std::printf("%-24s %10s %10s %6s (not reached up to level %d; best facets %s; %s)\n", d.label, fmt(hv, 4).c_str(),
-                  "-", "-", facets.back().level, fmt(best, 4).c_str(),
-                  std::isinf(extra)      ? "extrapolated beyond 1e12 triangles"
-                  : std::isfinite(extra) ? ("extrapolated ~" + fmt(extra, 0) + " triangles").c_str()
-                                       : "no extrapolation: the accelerator's error is 0 or the trend is flat");
-      j["reached"] = false;
-      j["best_facets"] = jnum(best);
-      j["extrapolated_triangles"] = jnum(extra);
-    } else {
-      const Row& r = facets[std::size_t(at)];
-      const double ratio = (r.cycles && hw.cycles) ? double(r.cycles) / double(hw.cycles) : NAN;
-      std::printf("%-24s %10s %10s %6d %9zu %8.1f %11.1f %11s %8s\n", d.label, fmt(hv, 4).c_str(),
-                  fmt(d.get(r.m), 4).c_str(), r.level, r.primitives, double(r.primitives) / double(hw.primitives),
-                  r.gl_ms, r.cycles ? std::to_string(r.cycles).c_str() : "-", fmt(ratio, 2).c_str());
-      j["reached"] = true;
-      j["facets"] = jnum(d.get(r.m));
-      j["level"] = r.level;
-      j["triangles"] = r.primitives;
-      j["facets_host_ms"] = r.host_ms;
-      j["facets_draw_ms"] = r.draw_ms;
-      j["facets_gl_ms"] = r.gl_ms;
-      j["hw_host_ms"] = hw.host_ms;
-      j["facet_cycles"] = r.cycles;
-      j["quadric_cycles"] = hw.cycles;
+    j["status"] = equalErrorStatusName(p.status);
+    j["reached"] = p.status == EqualErrorStatus::AtCoarsest || p.status == EqualErrorStatus::Interpolated;
+    const Row& finest = facets[p.finest];
+    j["finest_setting"] = finest.setting();
+    j["finest_triangles"] = finest.primitives;
+    j["finest_facets"] = jnum(d.get(finest.m));
+    j["quadric_cycles"] = hw.cycles;
+    j["hw_host_ms"] = hw.host_ms;
+    if (!p.found()) {
+      std::printf("%-24s %10s %-22s (finest measured: %s, %zu triangles, %s)\n", d.label, fmt(hv, 4).c_str(),
+                  "not reached", finest.setting().c_str(), finest.primitives, fmt(d.get(finest.m), 4).c_str());
+      jEqual.push_back(j);
+      continue;
     }
+    const double cycles = rowValueAt(p, facets, [](const Row& r) { return double(r.cycles); });
+    const double draw = rowValueAt(p, facets, [](const Row& r) { return r.draw_ms; });
+    const double ratio = hw.cycles ? cycles / double(hw.cycles) : NAN;
+    const std::string between = p.lo == p.hi ? facets[p.lo].setting() + " (coarsest measured)"
+                                             : facets[p.lo].setting() + " .. " + facets[p.hi].setting() +
+                                                   (p.status == EqualErrorStatus::Extrapolated ? " (+1 step)" : "");
+    std::printf("%-24s %10s %-22s %11.0f %9.1f %12s %9s %9s  %s\n", d.label, fmt(hv, 4).c_str(),
+                equalErrorStatusName(p.status), p.cost, p.cost / double(hw.primitives), fmt(cycles, 0).c_str(),
+                fmt(ratio, 2).c_str(), fmt(draw, 1).c_str(), between.c_str());
+    j["triangles"] = jnum(p.cost);
+    j["facet_cycles"] = jnum(cycles);
+    j["cycle_ratio"] = jnum(ratio);
+    j["facets_draw_ms"] = jnum(draw);
+    j["between"] = {facets[p.lo].setting(), facets[p.hi].setting()};
+    j["between_rows"] = {p.lo, p.hi};  // indices into the facet rows (rows[1 + i] of the report)
+    j["t"] = p.t;
     jEqual.push_back(j);
   }
-
   return jEqual;
 }
 

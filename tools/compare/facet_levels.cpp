@@ -11,21 +11,32 @@
 namespace qacc::compare {
 
 FacetRuns renderFacetLevels(const ComparePlan& plan, const CompareOptions& o, const FrameBuffer& ref) {
-  const Scene& scene = plan.scene;
+  return renderFacetSettings(plan.scene, plan, o, ref);
+}
+
+FacetRuns renderFacetSettings(const Scene& scene, const ComparePlan& plan, const CompareOptions& o,
+                              const FrameBuffer& ref) {
   FacetRuns f;
-  for (int level : plan.levels) {
+  for (const FacetSetting& s : plan.settings) {
     Row r;
     r.engine = "facets";
-    r.level = level;
+    r.level = s.level;
+    r.tolerance_px = s.tolerance_px;
     TriangleMesh3 mesh;
     const auto t0 = Clock::now();
-    FacetRun run = renderFacetScene(scene, level, plan.shading, o.threads, o.limits.max_triangles, &mesh);
+    FacetRun run = s.level > 0
+                       ? renderFacetScene(scene, s.level, plan.shading, o.threads, o.limits.max_triangles, &mesh)
+                       : renderFacetScene(scene, facetTessellationOptions(0, s.tolerance_px), plan.shading, o.threads,
+                                          o.limits.max_triangles, &mesh);
     r.host_ms = msSince(t0);
     r.draw_ms = run.render.draw_ms;
+    r.context_ms = run.render.context_ms;
+    r.upload_ms = run.render.upload_ms;
     r.gl_ms = run.render.totalMs();
     r.tess_ms = run.tessellate_ms;
     r.primitives = mesh.size();
     r.chord_error = run.tessellation.max_chord_error;
+    r.achieved_px = s.tolerance_px > 0 ? achievedMaxPixelError(run.tessellation) : 0;
     r.exact_grid = run.tessellation.exact_grid;
     f.exact_surfaces = run.tessellation.exact_surfaces;
     f.gl_renderer = run.render.gl_renderer;
@@ -41,9 +52,10 @@ FacetRuns renderFacetLevels(const ComparePlan& plan, const CompareOptions& o, co
       r.cycles = fst.cycles;
       r.modeled_ms = fst.frameSeconds() * 1e3;
     }
-    std::fprintf(stderr, "  facets level %d: %zu triangles%s, %.1f ms, %llu cycles\n", level, r.primitives,
+    std::fprintf(stderr, "  facets %s: %zu triangles%s, %.1f ms (draw %.1f ms), %llu cycles, silhouette %.2f px\n",
+                 r.setting().c_str(), r.primitives,
                  r.exact_grid ? (" (true surface: marching grid " + std::to_string(r.exact_grid) + ")").c_str() : "",
-                 r.host_ms, (unsigned long long)r.cycles);
+                 r.host_ms, r.draw_ms, (unsigned long long)r.cycles, r.m.hausdorff);
     f.rows.push_back(std::move(r));
   }
   return f;

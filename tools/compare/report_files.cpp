@@ -7,6 +7,7 @@
 
 #include "tools/compare/image_metrics.h"
 #include "tools/compare/number_format.h"
+#include "tools/report/build_info.h"
 
 namespace qacc::compare {
 
@@ -25,10 +26,15 @@ void writeCompareJson(const CompareOptions& o, const ComparePlan& plan, const Qu
   auto rowJson = [&](const Row& r) {
     nlohmann::json j;
     j["engine"] = r.engine;
+    j["setting"] = r.setting();
     j["level"] = r.level;
+    j["tolerance_px"] = r.tolerance_px;
+    j["achieved_max_pixel_error"] = jnum(r.achieved_px);
     j["primitives"] = r.primitives;
     j["host_ms"] = r.host_ms;
     j["draw_ms"] = r.draw_ms;
+    j["context_ms"] = r.context_ms;
+    j["upload_ms"] = r.upload_ms;
     j["gl_ms"] = r.gl_ms;
     j["tessellate_ms"] = r.tess_ms;
     j["cycles"] = r.cycles;
@@ -43,6 +49,8 @@ void writeCompareJson(const CompareOptions& o, const ComparePlan& plan, const Qu
     return j;
   };
   nlohmann::json out;
+  out["format"] = "qacc-compare/2";
+  out["qacc_version"] = qaccVersion();
   out["scene"] = scene.name;
   out["scene_file"] = o.scene_path;
   out["width"] = scene.width;
@@ -52,6 +60,7 @@ void writeCompareJson(const CompareOptions& o, const ComparePlan& plan, const Qu
   out["gl_renderer"] = facets.gl_renderer;
   out["gl_version"] = facets.gl_version;
   out["facet_shading"] = facets.shading_used;
+  out["facet_settings"] = o.levels.empty() ? "tolerances (pixels of projected chord error)" : "levels (triangles per primitive)";
   out["hw_config"] = o.config_path.empty() ? "default" : o.config_path;
   out["clock_mhz"] = plan.cfg.clock_mhz;
   out["hw_cycle_identical_to_hw"] = quadrics.identical;
@@ -67,12 +76,17 @@ void writeCompareCsv(const CompareOptions& o, const Scene& scene, const QuadricR
   const Row& hw = quadrics.hw;
   const std::string& glRenderer = facets.gl_renderer;
   std::ostringstream csv;
-  csv << "scene,engine,level,primitives,host_ms,draw_ms,cycles,modeled_ms,chord_error";
+  csv << "# qacc compare " << qaccVersion() << ", scene " << o.scene_path << " (" << scene.width << "x" << scene.height
+      << "), accelerator config " << (o.config_path.empty() ? "default" : o.config_path) << ", facets "
+      << facets.shading_used << " via " << facets.gl_renderer << "\n";
+  csv << "scene,engine,setting,level,tolerance_px,achieved_max_pixel_error,primitives,host_ms,context_ms,upload_ms,"
+         "draw_ms,cycles,modeled_ms,chord_error";
   for (const auto& d : metricDefs()) csv << "," << d.key;
   csv << ",wrong_object_px,pinholes_px,spurious_px,depth_max_lsb,gl_renderer\n";
   auto rowCsv = [&](const Row& r) {
-    csv << scene.name << "," << r.engine << "," << r.level << "," << r.primitives << "," << r.host_ms << ","
-        << r.draw_ms << "," << r.cycles << "," << r.modeled_ms << "," << r.chord_error;
+    csv << scene.name << "," << r.engine << "," << r.setting() << "," << r.level << "," << r.tolerance_px << ","
+        << fmt(r.achieved_px, 4) << "," << r.primitives << "," << r.host_ms << "," << r.context_ms << ","
+        << r.upload_ms << "," << r.draw_ms << "," << r.cycles << "," << r.modeled_ms << "," << r.chord_error;
     for (const auto& d : metricDefs()) csv << "," << fmt(d.get(r.m), 6);
     csv << "," << r.m.wrong << "," << r.m.pinholes << "," << r.m.spurious << "," << fmt(r.m.depth_max_lsb, 3) << ",\""
         << (r.engine == "facets" ? glRenderer : std::string("qacc hw")) << "\"\n";

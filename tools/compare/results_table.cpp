@@ -24,12 +24,15 @@ void printResultsTable(const Scene& scene, const QuadricRuns& quadrics, const Fa
                 "facets are marching tetrahedra of the true surface (chord = sampled distance to it)\n",
                 exactSurfaces);
   std::printf("reference: %.1f ms (exact ray casting)\n", refMs);
-  std::printf("%-8s %6s %9s %9s %9s %11s %9s %8s %7s %7s %7s %7s %7s %8s %8s %9s\n", "engine", "level", "prims",
-              "host_ms", "draw_ms", "cycles", "model_ms", "PSNR", "SSIM", "wrong", "pinhol", "spur", "haus",
-              "chamfer", "dLSBmean", "chord");
+  std::printf("(eps: the tessellation's tolerance, pixels; tess_px: its achieved projected chord error; haus: the "
+              "silhouette Hausdorff distance to the reference, pixels)\n");
+  std::printf("%-8s %-13s %7s %9s %9s %9s %11s %9s %8s %7s %7s %7s %7s %7s %8s %8s %9s\n", "engine", "setting",
+              "tess_px", "prims", "host_ms", "draw_ms", "cycles", "model_ms", "PSNR", "SSIM", "wrong", "pinhol", "spur",
+              "haus", "chamfer", "dLSBmean", "chord");
   auto printRow = [&](const Row& r) {
-    std::printf("%-8s %6s %9zu %9.1f %9s %11s %9s %8s %7.4f %7zu %7zu %7zu %7s %7s %8s %9s\n", r.engine.c_str(),
-                r.level ? std::to_string(r.level).c_str() : "-", r.primitives, r.host_ms,
+    std::printf("%-8s %-13s %7s %9zu %9.1f %9s %11s %9s %8s %7.4f %7zu %7zu %7zu %7s %7s %8s %9s\n", r.engine.c_str(),
+                r.engine == "facets" ? r.setting().c_str() : "-",
+                r.tolerance_px > 0 ? fmt(r.achieved_px, 2).c_str() : "-", r.primitives, r.host_ms,
                 r.draw_ms > 0 ? fmt(r.draw_ms, 1).c_str() : "-",
                 r.cycles ? std::to_string(r.cycles).c_str() : "-", r.cycles ? fmt(r.modeled_ms, 3).c_str() : "-",
                 fmt(r.m.psnr, 2).c_str(), r.m.ssim, r.m.wrong, r.m.pinholes, r.m.spurious, fmt(r.m.hausdorff, 2).c_str(),

@@ -1,10 +1,17 @@
 #include "tools/compare/side_by_side.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <filesystem>
 
 #include "raster/image/heat_map.h"
 #include "raster/image/png_io.h"
 #include "raster/metrics/coverage_error.h"
+#include "tools/compare/number_format.h"
+#include "tools/compare/report_files.h"
+#include "tools/report/build_info.h"
+#include "tools/report/python_tool.h"
 
 namespace qacc::compare {
 
@@ -27,28 +34,73 @@ Image8 coverageOverlay(const FrameBuffer& ref, const FrameBuffer& t) {
   return out;
 }
 
+// |ΔY| as an 8-bit gray image (0..255 luma levels); the script maps it to colour.
+Image8 lumaError(const FrameBuffer& ref, const FrameBuffer& t) {
+  const ImageF d = lumaDifference(ref.color, t.color);
+  Image8 out(d.width, d.height, 1);
+  for (std::size_t i = 0; i < d.data.size(); ++i)
+    out.data[i] = std::uint8_t(std::clamp(std::lround(d.data[i]), 0L, 255L));
+  return out;
+}
+
+nlohmann::json metricsJson(const Row& r) {
+  return {{"psnr_db", jnum(r.m.psnr)},
+          {"ssim", jnum(r.m.ssim)},
+          {"silhouette_hausdorff_px", jnum(r.m.hausdorff)},
+          {"wrong_object_px", r.m.wrong},
+          {"pinholes_px", r.m.pinholes},
+          {"spurious_px", r.m.spurious}};
+}
+
 }  // namespace
 
 std::size_t shownFacetLevel(const nlohmann::json& jEqual, const std::vector<Row>& facets) {
-  int shown = int(facets.size()) - 1;
+  std::size_t shown = facets.size() - 1;
   for (const auto& j : jEqual)
-    if (j["metric"] == "psnr_db" && j.value("reached", false)) {
-      for (std::size_t i = 0; i < facets.size(); ++i)
-        if (facets[i].level == j["level"].get<int>()) shown = int(i);
-    }
-  return std::size_t(shown);
+    if (j["metric"] == "silhouette_hausdorff_px" && j.value("reached", false) && j.contains("between_rows"))
+      shown = j["between_rows"][1].get<std::size_t>();
+  return shown;
 }
 
-void writeSideBySide(const std::string& path, const FrameBuffer& ref, const Row& hw, const Row& fr) {
-  const int W = ref.width, H = ref.height;
-  Image8 sbs(3 * W, 2 * H, 3, 0);
-  blit(sbs, ref.color, 0, 0);
-  blit(sbs, hw.fb.color, W, 0);
-  blit(sbs, fr.fb.color, 2 * W, 0);
-  blit(sbs, heatMap(lumaDifference(ref.color, hw.fb.color), 64.0), 0, H);
-  blit(sbs, heatMap(lumaDifference(ref.color, fr.fb.color), 64.0), W, H);
-  blit(sbs, coverageOverlay(ref, fr.fb), 2 * W, H);
-  writePng(path, sbs);
+void writeSideBySidePanels(const std::string& dir, const SideBySideInfo& info, const FrameBuffer& ref, const Row& hw,
+                           const Row& fr) {
+  namespace fs = std::filesystem;
+  const fs::path panels = fs::path(dir) / "panels";
+  fs::create_directories(panels);
+  writePng((panels / "reference.png").string(), ref.color);
+  writePng((panels / "quadrics.png").string(), hw.fb.color);
+  writePng((panels / "facets.png").string(), fr.fb.color);
+  writePng((panels / "quadrics_luma_error.png").string(), lumaError(ref, hw.fb));
+  writePng((panels / "facets_luma_error.png").string(), lumaError(ref, fr.fb));
+  writePng((panels / "facets_coverage.png").string(), coverageOverlay(ref, fr.fb));
+  nlohmann::json j;
+  j["format"] = "qacc-side-by-side/1";
+  j["qacc_version"] = qaccVersion();
+  j["scene"] = info.scene;
+  j["width"] = ref.width;
+  j["height"] = ref.height;
+  j["luma_error_scale"] = {{"unit", "|delta Y| (Rec. 601 luma, 8-bit levels)"}, {"max", 64}};
+  j["coverage_colours"] = {{"wrong object", "#ff2828"}, {"pinhole", "#ffe600"}, {"spurious", "#00dcff"}};
+  j["reference"] = {{"image", "panels/reference.png"}, {"engine", "reference: exact double-precision ray casting"}};
+  j["quadrics"] = {{"image", "panels/quadrics.png"},
+                   {"error_image", "panels/quadrics_luma_error.png"},
+                   {"engine", "accelerator (hw), " + std::to_string(info.quadric_primitives) + " quadrics"},
+                   {"config", info.hw_config},
+                   {"cycles", hw.cycles},
+                   {"metrics", metricsJson(hw)}};
+  j["facets"] = {{"image", "panels/facets.png"},
+                 {"error_image", "panels/facets_luma_error.png"},
+                 {"coverage_image", "panels/facets_coverage.png"},
+                 {"engine", "triangles via " + info.gl_renderer + ", " + info.facet_shading + " shading"},
+                 {"setting", fr.setting()},
+                 {"tolerance_px", fr.tolerance_px},
+                 {"level", fr.level},
+                 {"triangles", fr.primitives},
+                 {"cycles", fr.cycles},
+                 {"metrics", metricsJson(fr)}};
+  writeText((fs::path(dir) / "side_by_side.json").string(), j.dump(2) + "\n");
 }
+
+std::string composeSideBySide(const std::string& dir) { return runPythonTool("compose_side_by_side.py", dir); }
 
 }  // namespace qacc::compare

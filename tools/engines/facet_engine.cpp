@@ -3,25 +3,47 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 namespace qacc {
 
+TessellationOptions facetTessellationOptions(int level, double pixelError) {
+  TessellationOptions to;
+  to.chord_samples = 2;  // vertices, edge midpoints and the centre region: cheap enough for big scenes
+  if (pixelError > 0) {
+    to.pixel_error = pixelError;
+  } else {
+    if (level < 2) throw std::invalid_argument("facets: --level must be at least 2 (triangles per primitive)");
+    to.triangles = level;
+  }
+  return to;
+}
+
+double achievedMaxPixelError(const TessellationReport& report) { return report.max_pixel_error; }
+double achievedMeanPixelError(const TessellationReport& report) { return report.mean_pixel_error; }
+
 FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, int threads, std::size_t max_triangles,
                           TriangleMesh3* meshOut) {
-  if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
   if (level < 2) throw std::invalid_argument("facets: --level must be at least 2 (triangles per primitive)");
   const std::size_t estimate = scene.primitives.size() * std::size_t(level);
   if (estimate > max_triangles)
     throw std::invalid_argument(Limits::exceeded("facets: level " + std::to_string(level) + " for " +
                                                      std::to_string(scene.primitives.size()) + " primitives",
                                                  estimate, "triangles", max_triangles, "max-triangles"));
+  return renderFacetScene(scene, facetTessellationOptions(level, 0), shading, threads, max_triangles, meshOut);
+}
+
+FacetRun renderFacetScene(const Scene& scene, const TessellationOptions& to, FacetShading shading, int threads,
+                          std::size_t max_triangles, TriangleMesh3* meshOut) {
+  if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
   FacetRun run;
   const auto t0 = std::chrono::steady_clock::now();
-  TessellationOptions to;
-  to.triangles = level;
-  to.chord_samples = 2;  // vertices, edge midpoints and the centre region: cheap enough for big scenes
   TriangleMesh3 mesh = tessellateScene(scene, to, &run.tessellation);
   run.tessellate_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (mesh.size() > max_triangles)
+    throw std::invalid_argument(Limits::exceeded("facets: the tessellation of " +
+                                                     std::to_string(scene.primitives.size()) + " primitives",
+                                                 mesh.size(), "triangles", max_triangles, "max-triangles"));
 #ifdef QACC_HAVE_OSMESA
   FacetRenderOptions ro;
   ro.shading = shading;
@@ -58,8 +80,9 @@ bool runFacetEngine(const std::string& engine, const Scene& scene, const EngineO
     out.notes.push_back(buf);
   }
   std::snprintf(buf, sizeof buf,
-                "facets: tessellate %.2f ms, GL setup %.2f ms, draw+finish %.2f ms, read back %.2f ms, id pass %.2f ms",
-                run.tessellate_ms, run.render.setup_ms, run.render.draw_ms, run.render.readback_ms, run.render.id_pass_ms);
+                "facets: tessellate %.2f ms, GL context %.2f ms, upload %.2f ms, draw+finish %.2f ms, read back %.2f ms, "
+                "id pass %.2f ms",
+                run.tessellate_ms, run.render.context_ms, run.render.upload_ms, run.render.draw_ms, run.render.readback_ms, run.render.id_pass_ms);
   out.notes.push_back(buf);
   out.notes.push_back("facets: shading " + std::string(facetShadingName(run.render.shading_used)) + ", GL_RENDERER " +
                       run.render.gl_renderer + ", GL_VERSION " + run.render.gl_version);

@@ -26,5 +26,16 @@ bool runFacetEngine(const std::string& engine, const Scene& scene, const EngineO
 // exceed `max_triangles` (caps come on top), before building it.
 FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, int threads, std::size_t max_triangles,
                           TriangleMesh3* mesh = nullptr);
+// The tessellation options of a level (triangles per primitive) or, when pixelError > 0, of
+// a screen-space tolerance: every primitive to at most pixelError pixels of projected chord
+// error in the scene's view (modeling/tessellation: TessellationOptions::pixel_error).
+TessellationOptions facetTessellationOptions(int level, double pixelError);
+// The same run from explicit options. With a pixel error the count is known only once built:
+// a mesh over `max_triangles` is refused after tessellation, before drawing.
+FacetRun renderFacetScene(const Scene& scene, const TessellationOptions& options, FacetShading shading, int threads,
+                          std::size_t max_triangles, TriangleMesh3* mesh = nullptr);
+// The achieved projected chord error of a pixel-error tessellation (max, mean; pixels).
+double achievedMaxPixelError(const TessellationReport& report);
+double achievedMeanPixelError(const TessellationReport& report);
 
 }  // namespace qacc
