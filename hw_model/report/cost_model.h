@@ -29,11 +29,16 @@ struct UnitCost {
   double total() const { return ge_each * copies; }
 };
 
+struct SceneNeeds;
+
 struct CostModel {
   std::vector<UnitCost> units;
   double totalGe() const;
   double zbufferBitsPerPixel = 0;  // off-chip memory per pixel
-  static CostModel of(const HwConfig& cfg);
+  // The full configuration, or with `needs` the part of it a scene uses (scene_needs.h): no
+  // cap logic without solids, min(K, the scene's largest plane count) clip evaluators, no
+  // facet depth interpolator without facets.
+  static CostModel of(const HwConfig& cfg, const SceneNeeds* needs = nullptr);
   // Building blocks (GE).
   static double reg(double bits) { return 6.0 * bits; }
   static double adder(double bits) { return 10.0 * bits; }

@@ -11,6 +11,7 @@
 #include "tools/cli/commands.h"
 #include "tools/engines/image_size.h"
 #include "tools/cli/limit_options.h"
+#include "tools/cli/view_cull_option.h"
 #include "tools/engines/render_job.h"
 
 namespace qacc {
@@ -23,6 +24,7 @@ struct BatchArgs {
   int threads = 0, width = 0, height = 0;
   bool accuracy = true;
   Limits limits;
+  bool view_cull = true;
 };
 }  // namespace
 
@@ -37,6 +39,7 @@ void addBatchCommand(CLI::App& app) {
   cmd->add_option("--height", args->height, "Image height override");
   cmd->add_flag("!--no-accuracy", args->accuracy, "hw engines: skip the accuracy line (no reference render)");
   addLimitOptions(cmd, args->limits);
+  addViewCullOption(cmd, args->view_cull);
   cmd->callback([args] {
     checkImageSize(args->width, args->height);
     std::filesystem::create_directories(args->out);
@@ -52,6 +55,7 @@ void addBatchCommand(CLI::App& app) {
       job.options.threads = args->threads;
       job.options.report_accuracy = args->accuracy;
       job.options.limits = args->limits;
+      job.view_cull = args->view_cull;
       job.color_path = (std::filesystem::path(args->out) / std::filesystem::path(path).stem()).string() + ".png";
       RenderJobResult r;
       try {

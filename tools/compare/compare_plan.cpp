@@ -22,7 +22,8 @@ std::vector<int> parseLevels(const std::string& s) {
 
 ComparePlan planCompare(const CompareOptions& o) {
   ComparePlan p;
-  p.scene = loadScene(o.scene_path, o.limits);
+  checkImageSize(o.width, o.height);
+  p.scene = loadScene(o.scene_path, o.limits, ViewCulling{o.view_cull, o.width, o.height});
   requireCsgSupport("facets", p.scene);  // the facets half cannot draw CSG yet
   applyImageSize(p.scene, o.width, o.height);
   p.levels = parseLevels(o.levels);

@@ -17,7 +17,8 @@ RenderJobResult runRenderJob(const RenderJob& job) {
       throw std::invalid_argument("--no-accuracy applies to the accelerator engines only (engine '" + job.engine +
                                   "' prints no accuracy line)");
   }
-  out.scene = loadScene(job.scene_path, job.options.limits);
+  checkImageSize(job.width, job.height);
+  out.scene = loadScene(job.scene_path, job.options.limits, ViewCulling{job.view_cull, job.width, job.height});
   applyImageSize(out.scene, job.width, job.height);
   out.result = runEngine(job.engine, out.scene, job.options);
   const FrameBuffer& fb = out.result.fb;
