@@ -39,6 +39,10 @@ struct PrimitiveSetup {
   int index = 0, object = 0, material = 0;
   bool solid = false;
   bool visible = false;  // non-empty box and representable
+  // Host culling: the exact screen box (raster/pixel/window_primitive.h) is empty — the
+  // piece misses the screen or the depth range [0, 1]. The primitive is dropped after the
+  // host interface, before the rest of setup; it costs the box test's operations only.
+  bool culled = false;
   bool facet = false;    // flat-facet path (plane + edges, no square root)
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // screen box [x0, x1) x [y0, y1); local origin (x0, y0)
   // Traversal: the contour conic in local coordinates (unquantised; spans are widened).
@@ -69,6 +73,7 @@ struct PrimitiveSetup {
   std::vector<VectorSetup> pointLights;  // one per point light of the scene
   // Cost.
   int setupOps = 0;
+  int boxTestOps = 0;  // the part of setupOps that decides culling (window transform + exact box)
   int descriptorWords = 0;
 };
 

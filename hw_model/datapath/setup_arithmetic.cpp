@@ -100,6 +100,13 @@ int setupOperationCount(int planes, int pointLights, bool facet) {
   return ops;
 }
 
+int boxTestOperationCount(int planes, bool facet) {
+  // Of setupOperationCount's items: the window transform (128 + 16 per plane), the conic box
+  // (30, not for a facet) and the clip-polytope box (10 per pair of planes + 10 per plane).
+  const int pairs = planes * (planes - 1) / 2;
+  return 128 + 16 * planes + (facet ? 0 : 30) + 10 * pairs + 10 * planes;
+}
+
 PrimitiveSetup setupPrimitive(const Scene& scene, int index, const Eigen::Matrix4d& M, const Eigen::Matrix4d& Minv,
                               const HwConfig& cfg, OverflowCounter& ovf) {
   (void)M;
@@ -113,10 +120,14 @@ PrimitiveSetup setupPrimitive(const Scene& scene, int index, const Eigen::Matrix
   int pointLights = 0;
   for (const Light& l : scene.lights) pointLights += l.type == Light::Type::Point;
   s.setupOps = setupOperationCount(int(prim.clip.size()), pointLights, s.facet);
+  s.boxTestOps = boxTestOperationCount(int(prim.clip.size()), s.facet);
   s.descriptorWords = 10 + 4 * int(prim.clip.size()) + 2;
 
   const WindowPrimitive w = toWindow(prim, index, Minv, scene.width, scene.height);
-  if (w.box.empty()) return s;
+  if (w.box.empty()) {
+    s.culled = true;
+    return s;
+  }
   s.x0 = w.box.x0;
   s.y0 = w.box.y0;
   s.x1 = w.box.x1;

@@ -21,5 +21,8 @@ PrimitiveSetup setupPrimitive(const Scene& scene, int index, const Eigen::Matrix
 // Multiply-add operations of the setup of a primitive with `planes` clip planes and
 // `pointLights` point lights (see setup_arithmetic.cpp for the breakdown).
 int setupOperationCount(int planes, int pointLights, bool facet);
+// The first multiply-adds of that count: the window transform of the quadric and its planes
+// and the exact screen box, all a culled primitive (PrimitiveSetup::culled) costs.
+int boxTestOperationCount(int planes, bool facet);
 
 }  // namespace qacc

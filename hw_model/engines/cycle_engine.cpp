@@ -30,6 +30,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   HwRender out;
   HwStats& st = out.stats;
   st.describeRun("hw-cycle", cfg, scene.name, scene.width, scene.height, nt);
+  st.priceNeeds(scene);
 
   // The setup arithmetic is computed up front (in parallel); the setup unit's timing is
   // simulated below from each primitive's operation count.
@@ -53,6 +54,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   st.primitives = fs.setups.size();
   for (const PrimitiveSetup& s : fs.setups) {
     st.visible_primitives += s.visible;
+    st.culled_at_host += s.culled;
     st.facet_primitives += s.facet && s.visible;
   }
 
@@ -73,7 +75,9 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
 
   std::vector<std::unique_ptr<Unit>> units;
   units.push_back(std::make_unique<HostInterfaceUnit>(HostInterfaceUnit::Params::from(cfg), timedSetups, hostToSetup));
-  units.push_back(std::make_unique<SetupUnit>(SetupUnit::Params::from(cfg), timedSetups, hostToSetup, setupToTraversal));
+  auto setupUnit = std::make_unique<SetupUnit>(SetupUnit::Params::from(cfg), timedSetups, hostToSetup, setupToTraversal);
+  const SetupUnit& setup = *setupUnit;
+  units.push_back(std::move(setupUnit));
   units.push_back(std::make_unique<TraversalUnit>(TraversalUnit::Params::from(cfg), timedSetups, trace, setupToTraversal,
                                                   toPipeline));
   const PixelPipelineUnit::Params pipeParams = PixelPipelineUnit::Params::from(cfg);
@@ -100,6 +104,9 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   if (delivered != st.pixels.written)
     throw std::logic_error("hw-cycle: shading delivered " + std::to_string(delivered) + " of " +
                            std::to_string(st.pixels.written) + " pixels");
+  if (setup.culled() != st.culled_at_host)
+    throw std::logic_error("hw-cycle: setup culled " + std::to_string(setup.culled()) + " of " +
+                           std::to_string(st.culled_at_host) + " primitives");
   runCsgCyclePass(csg, fs, cfg, scene.width, scene.height, zb, nt, st);
   out.fb = resolveFrame(scene, cfg, fs, zb, nt, st);
   st.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -23,6 +23,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   HwRender out;
   HwStats& st = out.stats;
   st.describeRun("hw", cfg, scene.name, W, H, nt);
+  st.priceNeeds(scene);
 
   const FrameSetup fs = FrameSetup::build(scene, cfg, nt);
   st.overflow.add(fs.overflow);
@@ -38,6 +39,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
       csgAdded[std::size_t(tree)] = true;
       bins.add(-1 - tree, csg.trees[std::size_t(tree)].box());
     }
+    st.culled_at_host += s.culled;
     if (!s.visible) continue;
     ++st.visible_primitives;
     st.facet_primitives += s.facet;

@@ -5,6 +5,7 @@
 
 #include "hw_model/datapath/csg_interval_list.h"
 #include "hw_model/datapath/reciprocal_sqrt.h"
+#include "hw_model/report/scene_needs.h"
 #include "hw_model/timing/pixel_pipeline_unit.h"
 #include "raster/pixel/tile_binner.h"
 
@@ -31,9 +32,10 @@ double CostModel::totalGe() const {
   return t;
 }
 
-CostModel CostModel::of(const HwConfig& c) {
+CostModel CostModel::of(const HwConfig& c, const SceneNeeds* needs) {
   CostModel m;
-  const int P = c.pipelines, K = c.clip_evaluators;
+  const int P = c.pipelines, K = needs ? std::min(c.clip_evaluators, needs->max_planes) : c.clip_evaluators;
+  const bool caps = !needs || needs->solids, facets = !needs || needs->facets;
   const int acc = c.interp_acc_bits;
   // Interpolators (forward differences): a quadratic one keeps value, first and second
   // differences and a row-start copy (4 registers, 3 adders); a linear one keeps value,
@@ -43,10 +45,12 @@ CostModel CostModel::of(const HwConfig& c) {
   const int tokenBits = 12 + 12 + 16 + 16;  // x, y, primitive, issue index
   const int zReqBits = 12 + 12 + 16 + 4 + c.depth_bits;
 
-  const int descWords = 10 + 4 * 6 + 2;  // a descriptor with six clip planes
+  // A descriptor with six clip planes (with `needs`: the scene's largest, up to six).
+  const int descWords = 10 + 4 * (needs ? std::min(6, needs->max_planes) : 6) + 2;
   m.units.push_back({"host_interface", 1,
                      reg(c.bus_width_bits) + reg(double(descWords) * c.descriptor_word_bits) * (1 + c.host_fifo_depth), 0,
-                     "bus register, descriptor assembly buffer and host FIFO (6-plane descriptors)"});
+                     "bus register, descriptor assembly buffer and host FIFO (" +
+                         std::to_string((descWords - 12) / 4) + "-plane descriptors)"});
   m.units.push_back({"setup", 1,
                      c.setup_mad_units * floatMad() + reg(double(descWords) * 32 * 2) +
                          reg(40.0 * acc) * c.setup_fifo_depth,
@@ -66,15 +70,17 @@ CostModel CostModel::of(const HwConfig& c) {
     depthBasis = "two adders, two multipliers by 1/a";
   }
   const double clipGe = K * (linInterp + multiplier(c.clip_bits, c.depth_bits) + adder(c.clip_bits + c.depth_bits));
-  const double capGe = K * (linInterp + adder(c.depth_bits)) + 2 * adder(c.depth_bits);
+  const double capGe = caps ? K * (linInterp + adder(c.depth_bits)) + 2 * adder(c.depth_bits) : 0.0;
+  const double facetGe = facets ? linInterp : 0.0;  // the facet path's depth interpolator
   const double pipeGe = 2 * quadInterp + linInterp + digitRecurrence(sqrtOut, sqrtOut + 2, c.sqrt_radix) + depthGe +
-                        clipGe + capGe +
+                        clipGe + capGe + facetGe +
                         reg(double(PixelPipelineUnit::Params::from(c).latency) * (tokenBits + c.depth_bits)) +
                         3 * reg(double(c.pixel_fifo_depth) * tokenBits);
   m.units.push_back({"pixel_pipeline", P, pipeGe, 0,
                      "Δ and c quadratic, b linear interpolators; sqrt (" + std::to_string(sqrtIn) + "-bit input, radix " +
                          std::to_string(c.sqrt_radix) + "); depth: " + depthBasis + "; " + std::to_string(K) +
-                         " clip evaluators and cap depths; pipeline and FIFO registers"});
+                         " clip evaluators" + (caps ? " and cap depths" : "") +
+                         (facets ? "; facet depth interpolator" : "") + "; pipeline and FIFO registers"});
 
   // Z-buffer controller: one comparator per pipeline, bank state, read pipeline.
   m.units.push_back({"zbuffer", 1,

@@ -34,6 +34,8 @@ struct UnitCost {
   double total() const { return ge_each * copies; }
 };
 
+struct SceneNeeds;
+
 struct CostModel {
   std::vector<UnitCost> units;
   double totalGe() const;
@@ -44,7 +46,10 @@ struct CostModel {
   double csgListBitsPerPixel = 0;  // one pixel's bounded interval list
   double csgListBits = 0;          // the list memory: tile buffers x 32x32 pixels x bits per pixel
   double csgTreeStateBits = 0;     // the sweepers' per-node inside counters
-  static CostModel of(const HwConfig& cfg);
+  // The full configuration, or with `needs` the part of it a scene uses (scene_needs.h): no
+  // cap logic without solids, min(K, the scene's largest plane count) clip evaluators, no
+  // facet depth interpolator without facets.
+  static CostModel of(const HwConfig& cfg, const SceneNeeds* needs = nullptr);
   // Building blocks (GE).
   static double reg(double bits) { return 6.0 * bits; }
   static double adder(double bits) { return 10.0 * bits; }

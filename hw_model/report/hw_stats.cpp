@@ -68,6 +68,7 @@ nlohmann::ordered_json toJ(const HwStats& s) {
   j["threads"] = s.threads;
   j["primitives"] = s.primitives;
   j["visible_primitives"] = s.visible_primitives;
+  j["culled_at_host"] = s.culled_at_host;
   j["facet_primitives"] = s.facet_primitives;
   j["pixels"] = {{"tested", s.pixels.tested},           {"covered", s.pixels.covered},
                  {"caps", s.pixels.caps},               {"clipped", s.pixels.clipped},
@@ -129,6 +130,16 @@ nlohmann::ordered_json toJ(const HwStats& s) {
                              {"list_memory_bits", s.cost.csgListBits},
                              {"tree_state_bits", s.cost.csgTreeStateBits},
                              {"units", csgCost}};
+  if (s.has_needs) {
+    nlohmann::ordered_json needed = nlohmann::ordered_json::array();
+    for (const UnitCost& u : s.cost_needed.units)
+      needed.push_back({{"name", u.unit}, {"copies", u.copies}, {"ge_each", u.ge_each}, {"rom_bits", u.rom_bits}});
+    j["cost_needed"] = {{"total_ge", s.cost_needed.totalGe()},
+                        {"solids", s.needs.solids},
+                        {"facets", s.needs.facets},
+                        {"max_planes", s.needs.max_planes},
+                        {"units", needed}};
+  }
   j["configuration"] = nlohmann::ordered_json::parse(hwConfigToJson(s.configuration));
   if (s.has_accuracy) {
     nlohmann::ordered_json a;
@@ -155,6 +166,9 @@ std::vector<std::string> HwStats::summaryLines() const {
                 (unsigned long long)pixels.caps, (unsigned long long)pixels.clipped,
                 (unsigned long long)pixels.depth_rejected, (unsigned long long)pixels.written, overdraw(),
                 (unsigned long long)overflow.total());
+  out.push_back(buf);
+  std::snprintf(buf, sizeof buf, "primitives: %llu, %llu culled at the host (screen box misses the screen or the depth range)",
+                (unsigned long long)primitives, (unsigned long long)culled_at_host);
   out.push_back(buf);
   std::snprintf(buf, sizeof buf,
                 "precision loss of the quantised setup constants: %llu non-zero values quantised to zero, %llu left "
@@ -193,6 +207,16 @@ std::vector<std::string> HwStats::summaryLines() const {
   }
   out.push_back(cost + " kGE; Z-buffer memory off-chip, " + std::to_string(int(this->cost.zbufferBitsPerPixel)) +
                 " bits per pixel");
+  if (has_needs) {
+    std::snprintf(buf, sizeof buf, "silicon the scene needs (%s): %.0f kGE of the %.0f kGE above (pixel pipeline %.1f kGE each)",
+                  needs.describe().c_str(), cost_needed.totalGe() / 1e3, this->cost.totalGe() / 1e3,
+                  [&] {
+                    for (const UnitCost& u : cost_needed.units)
+                      if (u.unit == "pixel_pipeline") return u.ge_each / 1e3;
+                    return 0.0;
+                  }());
+    out.push_back(buf);
+  }
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/overflow_counters.h"
 #include "hw_model/report/cost_model.h"
+#include "hw_model/report/scene_needs.h"
 
 namespace qacc {
 
@@ -53,6 +54,9 @@ struct HwStats {
   int threads = 1;
   std::uint64_t primitives = 0;
   std::uint64_t visible_primitives = 0;  // non-empty screen box
+  // Dropped after the host interface, before setup: the exact screen box misses the screen
+  // or the depth range (PrimitiveSetup::culled; hw-cycle costs the box test's cycles).
+  std::uint64_t culled_at_host = 0;
   std::uint64_t facet_primitives = 0;    // through the flat-facet path
   PixelCounters pixels;
   OverflowCounters overflow;
@@ -65,6 +69,9 @@ struct HwStats {
   double trace_seconds = 0;          // hw-cycle: wall time of the pixel datapath pass (pixel_trace.h)
 
   CostModel cost;                    // silicon cost of the configuration
+  SceneNeeds needs;                  // the units the scene uses (priceNeeds)
+  CostModel cost_needed;             // silicon cost of the part of the configuration the scene uses
+  bool has_needs = false;
   HwConfig configuration;            // the resolved configuration (every key is saved)
   bool has_accuracy = false;         // accuracy against the reference was measured
   AccuracyReport accuracy;
@@ -81,6 +88,12 @@ struct HwStats {
     threads = nthreads;
     clock_mhz = cfg.clock_mhz;
     cost = CostModel::of(cfg);
+  }
+  // Prices the configuration `scene` needs beside the full one (scene_needs.h).
+  void priceNeeds(const Scene& s) {
+    needs = SceneNeeds::of(s);
+    cost_needed = CostModel::of(configuration, &needs);
+    has_needs = true;
   }
   double frameSeconds() const { return clock_mhz > 0 ? double(cycles) / (clock_mhz * 1e6) : 0; }
   double overdraw() const;  // covered / distinct pixels written

@@ -5,7 +5,11 @@ namespace qacc {
 bool SetupUnit::tick(std::uint64_t now) {
   bool changed = false;
   if (current_ >= 0 && now >= readyAt_) {
-    if (out_.canSend()) {
+    if (setups_[std::size_t(current_)].culled) {  // dropped after the box test
+      current_ = -1;
+      ++culled_;
+      changed = true;
+    } else if (out_.canSend()) {
       out_.send(current_);
       current_ = -1;
       changed = true;

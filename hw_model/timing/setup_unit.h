@@ -1,7 +1,10 @@
 // SetupUnit: the timing of the setup processor (design §3.2 step 2). The arithmetic is
 // datapath/setup_arithmetic.h, computed for every primitive before the timing loop; the
 // unit takes primitives from the host interface one at a time, holds each for its
-// multiply-add count on `setup_mad_units` units, then hands it to traversal.
+// multiply-add count on `setup_mad_units` units, then hands it to traversal. A primitive
+// culled at the host (PrimitiveSetup::culled: its exact screen box misses the screen or the
+// depth range) holds the unit for the box test's operations only and is dropped there:
+// traversal never sees it (`culled()` counts them).
 #pragma once
 #include <algorithm>
 #include <vector>
@@ -20,7 +23,10 @@ class SetupUnit : public Unit {
     int mad_units = 4;
     static Params from(const HwConfig& cfg) { return {cfg.setup_mad_units}; }
     // Cycles the setup of `s` occupies the unit (at least one).
-    int cycles(const PrimitiveSetup& s) const { return std::max(1, (s.setupOps + mad_units - 1) / mad_units); }
+    int cycles(const PrimitiveSetup& s) const {
+      const int ops = s.culled ? s.boxTestOps : s.setupOps;
+      return std::max(1, (ops + mad_units - 1) / mad_units);
+    }
   };
 
   SetupUnit(const Params& p, const std::vector<PrimitiveSetup>& setups, Channel<PrimitiveToken>& in,
@@ -29,6 +35,7 @@ class SetupUnit : public Unit {
   bool tick(std::uint64_t now) override;
   std::uint64_t nextEvent() const override { return current_ >= 0 && readyAt_ > 0 ? readyAt_ : Unit::nextEvent(); }
   bool holdsWork() const override { return current_ >= 0; }
+  std::uint64_t culled() const { return culled_; }
 
  private:
   Params p_;
@@ -37,6 +44,7 @@ class SetupUnit : public Unit {
   Channel<PrimitiveToken>& out_;
   int current_ = -1;
   std::uint64_t readyAt_ = 0;
+  std::uint64_t culled_ = 0;
 };
 
 }  // namespace qacc

@@ -68,6 +68,7 @@ AlgebraicSpec readAlgebraicSpec(const JsonNode& o) {
 std::vector<Primitive> buildAlgebraic(const JsonNode& o, ObjectContext& ctx) {
   AlgebraicSpec spec = readAlgebraicSpec(o);
   spec.options.material = ctx.material;
+  spec.options.view = ctx.view;
   // The Kuhn mesh of the final level (refinement doubles the level up to max_level) has
   // 6 level^3 tetrahedra, each a degree-n Bernstein form: refuse before building it.
   int finalLevel = spec.options.level;
@@ -80,6 +81,9 @@ std::vector<Primitive> buildAlgebraic(const JsonNode& o, ObjectContext& ctx) {
         .fail(Limits::exceeded("level " + std::to_string(finalLevel), tets, "Kuhn tetrahedra", ctx.limits.max_cells,
                                "max-cells"));
   DegreeReductionResult r = reduceAlgebraic(spec.f, spec.box, spec.options);
+  ctx.note = "level " + std::to_string(r.level) + ": " + std::to_string(r.cells) + " cells, " +
+             std::to_string(r.built_cells) + " built, " + std::to_string(r.view_culled_cells) + " outside the view, " +
+             std::to_string(r.kept_cells) + " pieces";
   if (spec.exact_reference) ctx.scene.exact_surfaces.push_back(std::make_shared<AlgebraicSurface>(spec.f, spec.box));
   return std::move(r.primitives);
 }

@@ -78,14 +78,49 @@ struct LevelModel {
   TetMesh mesh;
   std::vector<BBTetra> reduced;  // degree 2, with the shared vertex/edge coefficients
   std::vector<char> kept;
+  std::vector<char> visible;     // the tetrahedron may meet the view volume (all 1 without one)
+  int built = 0;                 // cells whose Bernstein form was computed
 };
 
+// Which tetrahedra may meet the view (every one without a view), and which must be built:
+// the cells of every cube at most one cube away (Chebyshev) from a cube with a visible cell.
+// A visible cell takes its shared vertex and edge coefficients from the first cell in mesh
+// order that contains the vertex or edge, and smoothing averages the edges around its
+// vertices: all of those cells lie in cubes that touch the visible cell's cube, so the
+// visible cells' coefficients are exactly those of the whole model.
+void viewCells(const TetMesh& m, const ViewVolume* view, std::vector<char>& visible, std::vector<char>& needed) {
+  const std::size_t T = m.tets.size();
+  visible.assign(T, 1);
+  needed.assign(T, 1);
+  if (!view) return;
+  std::vector<char> cubeVisible(std::size_t(m.nx) * m.ny * m.nz, 0);
+  for (std::size_t t = 0; t < T; ++t) {
+    const Tetrahedron v = tetOf(m, t);
+    visible[t] = view->mayContain(v.data(), v.size());
+    if (visible[t]) cubeVisible[std::size_t(m.cube[t])] = 1;
+  }
+  std::vector<char> cubeNeeded(cubeVisible.size(), 0);
+  for (int k = 0; k < m.nz; ++k)
+    for (int j = 0; j < m.ny; ++j)
+      for (int i = 0; i < m.nx; ++i) {
+        if (!cubeVisible[std::size_t((k * m.ny + j) * m.nx + i)]) continue;
+        for (int kk = std::max(0, k - 1); kk <= std::min(m.nz - 1, k + 1); ++kk)
+          for (int jj = std::max(0, j - 1); jj <= std::min(m.ny - 1, j + 1); ++jj)
+            for (int ii = std::max(0, i - 1); ii <= std::min(m.nx - 1, i + 1); ++ii)
+              cubeNeeded[std::size_t((kk * m.ny + jj) * m.nx + ii)] = 1;
+      }
+  for (std::size_t t = 0; t < T; ++t) needed[t] = cubeNeeded[std::size_t(m.cube[t])];
+}
+
 LevelModel buildLevel(const Polynomial3& f, const Eigen::AlignedBox3d& box, int level,
-                      const DegreeReductionOptions& o) {
+                      const DegreeReductionOptions& o, const ViewVolume* view) {
   LevelModel L;
   L.mesh = kuhnMesh(box, level, level, level);
   const TetMesh& m = L.mesh;
   const std::size_t T = m.tets.size();
+  std::vector<char> needed;
+  viewCells(m, view, L.visible, needed);
+  for (char c : needed) L.built += c;
   std::vector<int> sign(T, 0);
   std::vector<BBTetra> own(T);
   const int n = f.degree();
@@ -94,6 +129,7 @@ LevelModel buildLevel(const Polynomial3& f, const Eigen::AlignedBox3d& box, int 
   for (long long ti = 0; ti < (long long)T; ++ti) {
     errors.run([&] {
       const std::size_t t = std::size_t(ti);
+      if (!needed[t]) return;
       BBTetra B = BBTetra::fromPolynomial(f, tetOf(m, t));
       while (B.degree() < 2) B = B.elevated();
       sign[t] = B.strictSign();
@@ -108,6 +144,7 @@ LevelModel buildLevel(const Polynomial3& f, const Eigen::AlignedBox3d& box, int 
   std::unordered_map<std::uint64_t, double> ec;
   ec.reserve(T * 2);
   for (std::size_t t = 0; t < T; ++t) {
+    if (!needed[t]) continue;
     const auto& tv = m.tets[t];
     for (int a = 0; a < 4; ++a)
       if (std::isnan(vc[std::size_t(tv[std::size_t(a)])])) vc[std::size_t(tv[std::size_t(a)])] = own[t].coefficient(vertexIndex(a));
@@ -135,6 +172,10 @@ LevelModel buildLevel(const Polynomial3& f, const Eigen::AlignedBox3d& box, int 
   L.reduced.resize(T);
   L.kept.assign(T, 1);
   for (std::size_t t = 0; t < T; ++t) {
+    if (!L.visible[t]) {
+      L.kept[t] = 0;
+      continue;
+    }
     BBTetra A(2, tetOf(m, t));
     const auto& tv = m.tets[t];
     for (int a = 0; a < 4; ++a) A.setCoefficient(vertexIndex(a), vc[std::size_t(tv[std::size_t(a)])]);
@@ -234,17 +275,27 @@ DegreeReductionResult reduceAlgebraic(const Polynomial3& f, const Eigen::Aligned
   if (f.degree() > 16) throw std::invalid_argument("reduceAlgebraic: degree above 16 is not supported");
   const double scale = box.sizes().maxCoeff();
   int level = o.level;
-  LevelModel L = buildLevel(f, box, level, o);
+  // The view culls at build time only when the level is fixed and cells are not merged
+  // (DegreeReductionOptions::view); otherwise the whole model is built and culled below.
+  const bool cullWhileBuilding = o.view && !o.merge && !(o.refine_error > 0);
+  LevelModel L = buildLevel(f, box, level, o, cullWhileBuilding ? o.view : nullptr);
   GeometricError err = measureError(f, L, scale);
   while (o.refine_error > 0 && err.max() > o.refine_error && level * 2 <= o.max_level) {
     level *= 2;  // Bey 1 → 8 split of every Kuhn tetrahedron = the Kuhn mesh of half the spacing
-    L = buildLevel(f, box, level, o);
+    L = buildLevel(f, box, level, o, nullptr);
     err = measureError(f, L, scale);
+  }
+  if (o.view && !cullWhileBuilding && !o.merge) {
+    std::vector<char> needed;
+    viewCells(L.mesh, o.view, L.visible, needed);
+    for (std::size_t t = 0; t < L.kept.size(); ++t) L.kept[t] = L.kept[t] && L.visible[t];
   }
 
   DegreeReductionResult R;
   R.level = level;
   R.cells = int(L.mesh.tets.size());
+  R.built_cells = L.built;
+  for (char v : L.visible) R.view_culled_cells += !v;
   R.error = err;
   const std::size_t T = L.mesh.tets.size();
   std::vector<Quadric> quad(T);

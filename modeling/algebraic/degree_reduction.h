@@ -28,6 +28,7 @@
 
 #include "modeling/algebraic/polynomial3.h"
 #include "modeling/geometry/primitive.h"
+#include "modeling/scene/view_volume.h"
 
 namespace qacc {
 
@@ -40,6 +41,13 @@ struct DegreeReductionOptions {
   bool cull = true;           // false: emit every cell (for checking that culling changes nothing)
   int material = 0;
   int object = 0;
+  // View culling (loader/view_culling.h): cells whose tetrahedron misses this volume (in the
+  // polynomial's frame) are neither emitted nor, at a fixed level, reduced — only the cells
+  // of the cubes around the visible ones are (they own the coefficients the visible cells
+  // share), so the build time falls with the view. The kept pieces are exactly the
+  // unculled model's. With `merge`, and while `refine_error` chooses the level (the error
+  // is measured on the whole model), every cell is still built; null: no view culling.
+  const ViewVolume* view = nullptr;
 };
 
 // Sampled distance between the pieces and the true surface (world units): points on each
@@ -60,6 +68,8 @@ struct DegreeReductionResult {
   int level = 0;              // final level (after refinement)
   int cells = 0;              // tetrahedra in the mesh
   int kept_cells = 0;         // cells not culled
+  int view_culled_cells = 0;  // cells whose tetrahedron misses the view (options.view)
+  int built_cells = 0;        // cells whose Bernstein form was computed and reduced
   int distinct_quadrics = 0;  // among the kept pieces, up to scale (relative tolerance 1e-9)
   int merged_groups = 0;      // primitives made of more than one cell (merge)
   GeometricError error;       // of the final model

@@ -15,6 +15,7 @@
 #include "modeling/scene/json_node.h"
 #include "modeling/geometry/primitive.h"
 #include "modeling/scene/scene.h"
+#include "modeling/scene/view_volume.h"
 #include "modeling/support/limits.h"
 
 namespace qacc {
@@ -28,6 +29,10 @@ struct ObjectContext {
   std::string note;           // the builder's one-line account of what it built (qacc info)
   const Limits& limits;       // the work the scene may ask for (support/limits.h)
   std::string resolve(const std::string& path) const;  // relative → directory/path
+  // View culling (loader/view_culling.h): the view volume in the object's local frame (the
+  // frame the builder returns its primitives in), or null when nothing may be culled. A
+  // builder may skip any piece whose conservative bounds miss it.
+  const ViewVolume* view = nullptr;
 };
 
 using ObjectBuilder = std::function<std::vector<Primitive>(const JsonNode& object, ObjectContext& ctx)>;

@@ -5,12 +5,15 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "modeling/geometry/natural_quadrics.h"
 #include "modeling/loader/object_registry.h"
 #include "modeling/geometry/placed_exact_surface.h"
 #include "modeling/geometry/unit_plane.h"
+#include "modeling/geometry/primitive_bounds.h"
+#include "modeling/scene/view_volume.h"
 #include "modeling/scene/strict_json.h"
 #include "modeling/support/bounded_file.h"
 
@@ -196,7 +199,7 @@ struct BuiltObject {
 };
 
 BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, const std::map<std::string, int>& materials,
-                            const std::string& directory, const Limits& limits) {
+                            const std::string& directory, const Limits& limits, const ViewVolume* worldView) {
   if (!o.isObject()) o.fail("expected an object with a \"type\"");
   BuiltObject out;
   const JsonNode typeNode = o.at("type");
@@ -223,6 +226,12 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
   if (auto c = o.get("clip")) out.clip = readClip(*c);
 
   ObjectContext ctx{scene, directory, out.material, solid, has_material, {}, limits};
+  // Parts of a csg tree stay whole: culling is for top-level objects other than csg.
+  std::optional<ViewVolume> localView;
+  if (worldView && out.type != "csg") {
+    localView = out.transform.given ? worldView->inFrame(out.transform.M) : *worldView;
+    ctx.view = &*localView;
+  }
   try {
     out.prims = (*builder)(o, ctx);
   } catch (const SceneError&) {
@@ -249,13 +258,25 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
     if (p.quadric.Q.topLeftCorner<3, 4>().cwiseAbs().maxCoeff() == 0.0)
       o.fail("object degenerates to a constant (sizes or scales too extreme for double precision)");
   }
+  if (ctx.view) {
+    // What the builder emitted beyond the view: a piece whose exact world bounds (padded,
+    // primitive_bounds.h) miss the widened view volume cannot reach a pixel.
+    std::vector<Primitive> kept;
+    kept.reserve(out.prims.size());
+    for (Primitive& p : out.prims) {
+      const PrimitiveBounds b = primitiveBounds(p);
+      if (b.bounded && !b.empty && !worldView->mayContain(b.box)) continue;
+      kept.push_back(std::move(p));
+    }
+    out.prims = std::move(kept);
+  }
   return out;
 }
 
 void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::map<std::string, int>& materials,
-                const std::string& directory, const Limits& limits) {
+                const std::string& directory, const Limits& limits, const ViewVolume* view) {
   const std::size_t exactBefore = scene.exact_surfaces.size();
-  BuiltObject built = buildPrimitives(o, int(index), scene, materials, directory, limits);
+  BuiltObject built = buildPrimitives(o, int(index), scene, materials, directory, limits, view);
   if (scene.primitives.size() + built.prims.size() > limits.max_primitives)
     o.fail(Limits::exceeded("the scene", scene.primitives.size() + built.prims.size(), "primitives",
                             limits.max_primitives, "max-primitives"));
@@ -293,14 +314,14 @@ std::vector<Primitive> buildObject(const JsonNode& o, ObjectContext& parent, int
   std::map<std::string, int> materials;
   for (std::size_t i = 1; i < parent.scene.materials.size(); ++i) materials.emplace(parent.scene.materials[i].name, int(i));
   const std::size_t exactBefore = parent.scene.exact_surfaces.size();
-  BuiltObject built = buildPrimitives(o, objectIndex, parent.scene, materials, parent.directory, parent.limits);
+  BuiltObject built = buildPrimitives(o, objectIndex, parent.scene, materials, parent.directory, parent.limits, nullptr);
   if (parent.scene.exact_surfaces.size() > exactBefore)
     o.fail("a '" + built.type + "' object has a non-quadric exact surface and cannot be a part of another object");
   return std::move(built.prims);
 }
 
 Scene parseScene(const std::string& text, const std::string& file, const std::string& directory,
-                 const Limits& limits) {
+                 const Limits& limits, const ViewCulling& culling) {
   const json doc = parseStrictJson(text, file);
   const JsonNode root(doc, "", std::make_shared<const std::string>(file));
   if (!root.isObject()) root.fail("a scene must be a JSON object");
@@ -327,7 +348,11 @@ Scene parseScene(const std::string& text, const std::string& file, const std::st
   const std::size_t n = objects.size();
   scene.objects.reserve(n);
   scene.primitives.reserve(n);  // at least one each; large scenes are mostly simple objects
-  for (std::size_t i = 0; i < n; ++i) readObject(objects[i], i, scene, materials, directory, limits);
+  std::optional<ViewVolume> view;
+  if (culling.enabled)
+    view = ViewVolume::of(scene.camera, culling.width > 0 ? culling.width : scene.width,
+                          culling.height > 0 ? culling.height : scene.height);
+  for (std::size_t i = 0; i < n; ++i) readObject(objects[i], i, scene, materials, directory, limits, view ? &*view : nullptr);
   root.finish();
   return scene;
 }
@@ -346,8 +371,8 @@ std::string sceneDirectory(const std::string& path) {
   return slash == 0 ? "/" : path.substr(0, slash);
 }
 
-Scene loadScene(const std::string& path, const Limits& limits) {
-  return parseScene(readSceneText(path, limits), path, sceneDirectory(path), limits);
+Scene loadScene(const std::string& path, const Limits& limits, const ViewCulling& view) {
+  return parseScene(readSceneText(path, limits), path, sceneDirectory(path), limits, view);
 }
 
 }  // namespace qacc

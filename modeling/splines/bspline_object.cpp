@@ -203,13 +203,13 @@ std::vector<Primitive> build(const JsonNode& o, ObjectContext& ctx) {
   } else {
     const auto start = std::chrono::steady_clock::now();
     SimplexSpline3::CellStats st;
-    std::vector<Primitive> prims = spline.toPrimitives(ctx.material, 0, &st, o.boolean("cull", true));
+    std::vector<Primitive> prims = spline.toPrimitives(ctx.material, 0, &st, o.boolean("cull", true), ctx.view);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char note[256];
     std::snprintf(note, sizeof note,
-                  "%zu tetrahedra (%zu culled whole), %zu knot-triangle planes, %zu regions culled, %zu cells made, "
-                  "%zu emitted, %.2f s",
-                  st.tets, st.tets_culled, st.planes, st.regions_culled, st.cells, st.crossed, seconds);
+                  "%zu tetrahedra (%zu culled whole), %zu knot-triangle planes, %zu regions culled, %zu tetrahedra "
+                  "and regions outside the view, %zu cells made, %zu emitted, %.2f s",
+                  st.tets, st.tets_culled, st.planes, st.regions_culled, st.view_culled, st.cells, st.crossed, seconds);
     ctx.note = note;
     return prims;
   }

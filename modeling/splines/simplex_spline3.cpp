@@ -441,11 +441,24 @@ SimplexSpline3::CellStats& SimplexSpline3::CellStats::operator+=(const CellStats
   cells += o.cells;
   crossed += o.crossed;
   planes += o.planes;
+  view_culled += o.view_culled;
   return *this;
 }
 
+namespace {
+
+// False only when the region lies outside the view volume (true without a view).
+bool mayBeSeen(const ConvexPolyhedron& region, const ViewVolume* view) {
+  if (!view) return true;
+  std::vector<Eigen::Vector3d> corners;
+  for (const auto& v : region.vertices()) corners.push_back(v.x);
+  return view->mayContain(corners);
+}
+
+}  // namespace
+
 std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bool cull, double eps,
-                                                               CellStats& stats) const {
+                                                               CellStats& stats, const ViewVolume* view) const {
   std::vector<Cell> out;
   const auto& T = simplices_[t];
   Tetrahedron tet;
@@ -454,6 +467,10 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
   const ConvexPolyhedron start = tetRegion(tet, domain_, planes, eps);
   if (start.empty()) return out;
   ++stats.tets;
+  if (!mayBeSeen(start, view)) {
+    ++stats.view_culled;
+    return out;
+  }
 
   // Basis functions whose support box overlaps the region with volume (all those not zero
   // in its interior): when none changes sign, F does not either.
@@ -501,6 +518,10 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
   while (!stack.empty()) {
     CutRegion r = std::move(stack.back());
     stack.pop_back();
+    if (!mayBeSeen(r.poly, view)) {
+      ++stats.view_culled;
+      continue;
+    }
     double lo = rlo, hi = rhi;
     if (!r.classified) field.classify(r.poly, r.state, lo, hi);
     if (r.state.partial.empty()) r.planes.clear();  // one polynomial: no simplex face crosses it
@@ -542,7 +563,7 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
   return out;
 }
 
-std::vector<SimplexSpline3::Cell> SimplexSpline3::decompose(bool cull, CellStats* stats) const {
+std::vector<SimplexSpline3::Cell> SimplexSpline3::decompose(bool cull, CellStats* stats, const ViewVolume* view) const {
   if (n_ > 2) throw std::invalid_argument("SimplexSpline3: cells are made for degree <= 2");
   Eigen::AlignedBox3d all;
   for (const Vec& v : verts_) all.extend(v);
@@ -553,7 +574,7 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decompose(bool cull, CellStats
   ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1)
   for (long long t = 0; t < (long long)n; ++t)
-    errors.run([&] { per[std::size_t(t)] = decomposeTet(std::size_t(t), cull, eps, st[std::size_t(t)]); });
+    errors.run([&] { per[std::size_t(t)] = decomposeTet(std::size_t(t), cull, eps, st[std::size_t(t)], view); });
   errors.rethrow();
   std::vector<Cell> out;
   CellStats total;
@@ -571,9 +592,10 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::crossedCells(CellStats* stats)
   return decompose(true, stats);
 }
 
-std::vector<Primitive> SimplexSpline3::toPrimitives(int material, int object, CellStats* stats, bool cull) const {
+std::vector<Primitive> SimplexSpline3::toPrimitives(int material, int object, CellStats* stats, bool cull,
+                                                    const ViewVolume* view) const {
   std::vector<Primitive> out;
-  for (Cell& c : decompose(cull, stats)) {
+  for (Cell& c : decompose(cull, stats, view)) {
     Primitive prim;
     prim.quadric = c.quadric;
     prim.clip = std::move(c.faces);

@@ -25,6 +25,10 @@
 //  - a cell is dropped when its quadric's values at the corners have one strict sign and
 //    its BB coefficients have that sign on the parent tetrahedron, or on every tetrahedron
 //    of a fan covering the cell (convex hull property).
+// View culling (`view`, loader/view_culling.h): a tetrahedron or a region whose polyhedron
+// misses the view volume is dropped before it is cut further; every other region is cut
+// exactly as without a view (a region's cuts depend only on itself), so the cells that
+// remain are the unculled model's.
 // Tetrahedra are processed in parallel (OpenMP); the output order is the tetrahedra's.
 #pragma once
 #include <array>
@@ -33,6 +37,7 @@
 #include <Eigen/Dense>
 
 #include "modeling/geometry/primitive.h"
+#include "modeling/scene/view_volume.h"
 #include "modeling/splines/simplex_spline_base.h"
 
 namespace qacc {
@@ -62,6 +67,7 @@ class SimplexSpline3 : public SimplexSplineBase<3> {
     std::size_t cells = 0;           // cells made
     std::size_t crossed = 0;         // cells F can vanish in (emitted)
     std::size_t planes = 0;          // distinct cutting planes of the tetrahedra (summed)
+    std::size_t view_culled = 0;     // tetrahedra and regions dropped because they miss the view
     CellStats& operator+=(const CellStats& o);
   };
   // Every cell: convex polyhedra covering the tetrahedralisation (∩ domain), one quadric
@@ -72,11 +78,12 @@ class SimplexSpline3 : public SimplexSplineBase<3> {
   // The surface F = 0: one quadric per crossed cell (every cell with cull = false), clipped by
   // the cell's facets.
   std::vector<Primitive> toPrimitives(int material = 0, int object = 0, CellStats* stats = nullptr,
-                                      bool cull = true) const;
+                                      bool cull = true, const ViewVolume* view = nullptr) const;
 
  private:
-  std::vector<Cell> decompose(bool cull, CellStats* stats) const;
-  std::vector<Cell> decomposeTet(std::size_t tet, bool cull, double eps, CellStats& stats) const;
+  std::vector<Cell> decompose(bool cull, CellStats* stats, const ViewVolume* view = nullptr) const;
+  std::vector<Cell> decomposeTet(std::size_t tet, bool cull, double eps, CellStats& stats,
+                                 const ViewVolume* view) const;
 };
 
 // Knot clouds for a tetrahedralisation (simplexKnotClouds<3>).

@@ -3,6 +3,8 @@
 
 #include "hw_model/report/cost_model.h"
 #include "hw_model/config/hw_config.h"
+#include "hw_model/report/scene_needs.h"
+#include "modeling/geometry/natural_quadrics.h"
 
 using namespace qacc;
 
@@ -52,4 +54,41 @@ TEST(CostModel, ShippedConfigurationsAreOrderedByCost) {
   const double wide = CostModel::of(shipped("wide")).totalGe();
   EXPECT_LT(minimal, def);
   EXPECT_LT(def, wide);
+}
+
+TEST(CostModel, TheConfigurationASceneNeedsDropsTheUnitsItDoesNotUse) {
+  const HwConfig cfg;
+  const CostModel full = CostModel::of(cfg);
+  // Everything used (solids, facets, K planes or more): the needed configuration is the full one.
+  SceneNeeds all;
+  all.solids = all.facets = true;
+  all.max_planes = cfg.clip_evaluators + 3;
+  EXPECT_DOUBLE_EQ(CostModel::of(cfg, &all).totalGe(), full.totalGe());
+  // Spheres only: no cap logic, no clip evaluators, no facet path, smaller descriptors.
+  Scene spheres;
+  spheres.primitives.push_back(makeSphere({0, 0, 0}, 1));
+  const SceneNeeds none = SceneNeeds::of(spheres);
+  EXPECT_FALSE(none.solids);
+  EXPECT_FALSE(none.facets);
+  EXPECT_EQ(none.max_planes, 0);
+  const CostModel bare = CostModel::of(cfg, &none);
+  EXPECT_LT(unit(bare, "pixel_pipeline").ge_each, unit(full, "pixel_pipeline").ge_each);
+  EXPECT_LT(unit(bare, "host_interface").ge_each, unit(full, "host_interface").ge_each);
+  EXPECT_EQ(unit(bare, "shading").ge_each, unit(full, "shading").ge_each);
+  // Each unit on its own lowers the pipeline's cost.
+  SceneNeeds noCaps = all, noFacets = all, twoPlanes = all;
+  noCaps.solids = false;
+  noFacets.facets = false;
+  twoPlanes.max_planes = 2;
+  for (const SceneNeeds* n : {&noCaps, &noFacets, &twoPlanes})
+    EXPECT_LT(unit(CostModel::of(cfg, n), "pixel_pipeline").ge_each, unit(full, "pixel_pipeline").ge_each);
+  // A solid clipped cylinder needs caps and its planes.
+  Scene solid;
+  Primitive cyl = makeSphere({0, 0, 0}, 1);
+  cyl.solid = true;
+  cyl.clip.push_back(HalfSpace(Eigen::Vector4d(0, 0, 1, -0.5)));
+  solid.primitives.push_back(cyl);
+  const SceneNeeds s = SceneNeeds::of(solid);
+  EXPECT_TRUE(s.solids);
+  EXPECT_EQ(s.max_planes, 1);
 }

@@ -150,3 +150,43 @@ TEST(HwEngines, DefaultConfigAccuracyOnBenchmarkScenes) {
     EXPECT_EQ(hw.stats.overflow.total(), 0u) << name;
   }
 }
+
+TEST(HwEngines, PrimitivesOffScreenAreCulledAtTheHostForTheBoxTestsCycles) {
+  // Two spheres on screen, one beside the view and one behind the eye: the two off-screen ones
+  // are dropped before setup in both engines (same images), hw-cycle's setup spends only the
+  // box test's cycles on them and traversal never sees them.
+  Scene scene = loneSphereScene(128, 96);
+  scene.primitives.push_back(makeSphere({0.5, 0, 0}, 0.7));
+  scene.primitives.push_back(makeSphere({40, 0, 0}, 1.0));
+  scene.primitives.push_back(makeSphere({0, 0, 12}, 1.0));
+  scene.objects[0].count = scene.primitives.size();
+  HwConfig cfg;
+  const HwRender a = renderHw(scene, cfg, 2);
+  const HwRender c = renderHwCycle(scene, cfg, 1);
+  expectIdentical(a.fb, c.fb, "hw vs hw-cycle with culled primitives");
+  EXPECT_EQ(a.stats.culled_at_host, 2u);
+  EXPECT_EQ(c.stats.culled_at_host, 2u);
+  EXPECT_EQ(c.stats.visible_primitives, 2u);
+  const Eigen::Matrix4d M = scene.camera.worldToWindow(scene.width, scene.height);
+  std::uint64_t setupCycles = 0;
+  const SetupUnit::Params sp = SetupUnit::Params::from(cfg);
+  for (int i = 0; i < 4; ++i) {
+    OverflowCounter ovf;
+    const PrimitiveSetup s = setupPrimitive(scene, i, M, M.inverse(), cfg, ovf);
+    EXPECT_EQ(s.culled, i >= 2) << i;
+    EXPECT_LT(s.boxTestOps, s.setupOps);
+    setupCycles += std::uint64_t(sp.cycles(s));
+  }
+  for (const UnitStats& u : c.stats.units) {
+    if (u.name == "setup") {
+      EXPECT_GE(u.busy, setupCycles);
+    }
+    if (u.name == "traversal") {
+      EXPECT_EQ(u.items, 2u);
+    }
+  }
+  // Each culled primitive costs the box test, not the whole setup.
+  OverflowCounter ovf;
+  const PrimitiveSetup off = setupPrimitive(scene, 2, M, M.inverse(), cfg, ovf);
+  EXPECT_EQ(sp.cycles(off), (boxTestOperationCount(0, false) + cfg.setup_mad_units - 1) / cfg.setup_mad_units);
+}

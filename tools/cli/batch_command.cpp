@@ -13,6 +13,7 @@
 #include "tools/engines/image_size.h"
 #include "tools/cli/limit_options.h"
 #include "tools/cli/reference_cache_options.h"
+#include "tools/cli/view_cull_option.h"
 #include "tools/engines/render_job.h"
 
 namespace qacc {
@@ -27,6 +28,7 @@ struct BatchArgs {
   bool use_cache = true;
   std::string cache_dir;
   Limits limits;
+  bool view_cull = true;
 };
 }  // namespace
 
@@ -42,6 +44,7 @@ void addBatchCommand(CLI::App& app) {
   cmd->add_flag("!--no-accuracy", args->accuracy, "hw engines: skip the accuracy line (no reference render)");
   addReferenceCacheOptions(cmd, args->use_cache, args->cache_dir);
   addLimitOptions(cmd, args->limits);
+  addViewCullOption(cmd, args->view_cull);
   cmd->callback([args] {
     checkImageSize(args->width, args->height);
     std::filesystem::create_directories(args->out);
@@ -59,6 +62,7 @@ void addBatchCommand(CLI::App& app) {
       job.options.limits = args->limits;
       job.use_cache = args->use_cache;
       job.cache_dir = args->cache_dir;
+      job.view_cull = args->view_cull;
       job.color_path = (std::filesystem::path(args->out) / std::filesystem::path(path).stem()).string() + ".png";
       RenderJobResult r;
       try {

@@ -34,6 +34,7 @@
 #include "tools/cli/commands.h"
 #include "tools/engines/image_size.h"
 #include "tools/cli/limit_options.h"
+#include "tools/cli/view_cull_option.h"
 
 namespace qacc {
 
@@ -47,6 +48,7 @@ struct BenchArgs {
   int repeat = 3;
   bool cycle = true;
   Limits limits;
+  bool view_cull = true;
   std::string out;   // OUT.json and OUT.csv, one row per scene and thread count
   std::string json;
 };
@@ -147,7 +149,7 @@ void runBench(const BenchArgs& a) {
               "frame ms");
   std::vector<BenchRun> runs;
   for (const std::string& path : scenes) {
-    Scene scene = loadScene(path, a.limits);
+    Scene scene = loadScene(path, a.limits, ViewCulling{a.view_cull, a.width, a.height});
     applyImageSize(scene, a.width, a.height);
     for (int t : threads) {
       const BenchRun b = benchOne(scene, cfg, t, a.repeat, a.cycle);
@@ -225,6 +227,7 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--json", args->json, "Also write the results as JSON (with the machine)");
   cmd->add_option("--out", args->out, "Write the table as OUT.json and OUT.csv");
   addLimitOptions(cmd, args->limits);
+  addViewCullOption(cmd, args->view_cull);
   cmd->callback([args] { runBench(*args); });
 }
 

@@ -30,6 +30,7 @@
 
 #include "tools/cli/commands.h"
 #include "tools/cli/limit_options.h"
+#include "tools/cli/view_cull_option.h"
 #include "tools/compare/compare.h"
 
 namespace qacc {
@@ -53,6 +54,7 @@ void addCompareCommand(CLI::App& app) {
   cmd->add_option("--width", o->width, "Image width (with --height)");
   cmd->add_option("--height", o->height, "Image height (with --width)");
   addLimitOptions(cmd, o->limits);
+  addViewCullOption(cmd, o->view_cull);
   cmd->add_flag("--no-facet-cycles", o->no_facet_cycles, "Skip the facet-path cycle runs on the accelerator");
   cmd->callback([o] { compare::runCompare(*o); });
 }

@@ -3,6 +3,9 @@
 #include <map>
 #include <memory>
 
+#include "hw_model/config/hw_config.h"
+#include "hw_model/report/cost_model.h"
+#include "hw_model/report/scene_needs.h"
 #include "modeling/csg/csg_normal_form.h"
 #include "modeling/geometry/primitive_bounds.h"
 #include "modeling/geometry/quadric_type.h"
@@ -12,6 +15,7 @@
 #include "raster/reference/csg_hit.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/limit_options.h"
+#include "tools/cli/view_cull_option.h"
 
 namespace qacc {
 
@@ -52,13 +56,15 @@ void addInfoCommand(CLI::App& app) {
   auto path = std::make_shared<std::string>();
   auto perPrimitive = std::make_shared<bool>(false);
   auto limits = std::make_shared<Limits>();
+  auto viewCull = std::make_shared<bool>(true);
   CLI::App* cmd = app.add_subcommand("info", "Describe a scene: primitives, quadric types, clip planes, bounds");
   cmd->add_option("scene", *path, "Scene file")->required();
   cmd->add_flag("--primitives", *perPrimitive,
                 "Also list every primitive: object, quadric type, planes, solid, world bounds of its clipped piece");
   addLimitOptions(cmd, *limits);
-  cmd->callback([path, perPrimitive, limits] {
-    const Scene s = loadScene(*path, *limits);
+  addViewCullOption(cmd, *viewCull);
+  cmd->callback([path, perPrimitive, limits, viewCull] {
+    const Scene s = loadScene(*path, *limits, ViewCulling{*viewCull, 0, 0});
     std::printf("scene %s (%s)\n", s.name.c_str(), path->c_str());
     std::printf("image %dx%d, %s camera, %zu lights, %zu materials\n", s.width, s.height,
                 s.camera.type == Camera::Type::Perspective ? "perspective" : "orthographic", s.lights.size(),
@@ -110,6 +116,13 @@ void addInfoCommand(CLI::App& app) {
                   unbounded ? " (bounded primitives only)" : "");
     if (unbounded) std::printf("unbounded primitives: %d (their clipped piece is unbounded)\n", unbounded);
     if (empty) std::printf("empty primitives: %d (their clipped piece is empty)\n", empty);
+    {
+      // The accelerator's units this scene uses, priced by the cost model (default configuration).
+      const HwConfig cfg;
+      const SceneNeeds needs = SceneNeeds::of(s);
+      std::printf("accelerator units used: %s; cost model (default configuration): %.0f kGE full, %.0f kGE needed\n",
+                  needs.describe().c_str(), CostModel::of(cfg).totalGe() / 1e3, CostModel::of(cfg, &needs).totalGe() / 1e3);
+    }
     if (!s.csg_trees.empty()) printCsgInfo(s);
   });
 }

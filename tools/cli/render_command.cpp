@@ -7,6 +7,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/limit_options.h"
 #include "tools/cli/reference_cache_options.h"
+#include "tools/cli/view_cull_option.h"
 #include "tools/engines/render_job.h"
 
 namespace qacc {
@@ -33,6 +34,7 @@ void addRenderCommand(CLI::App& app) {
   addReferenceCacheOptions(cmd, job->use_cache, job->cache_dir);
   cmd->add_option("--threads", job->options.threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
   addLimitOptions(cmd, job->options.limits);
+  addViewCullOption(cmd, job->view_cull);
   cmd->callback([job] {
     const RenderJobResult r = runRenderJob(*job);
     const Scene& s = r.scene;

@@ -74,7 +74,8 @@ std::vector<FacetSetting> facetSettings(const CompareOptions& o) {
 
 ComparePlan planCompare(const CompareOptions& o) {
   ComparePlan p;
-  p.scene = loadScene(o.scene_path, o.limits);
+  checkImageSize(o.width, o.height);
+  p.scene = loadScene(o.scene_path, o.limits, ViewCulling{o.view_cull, o.width, o.height});
   requireCsgSupport("facets", p.scene);  // the facets half cannot draw CSG yet
   applyImageSize(p.scene, o.width, o.height);
   p.settings = facetSettings(o);

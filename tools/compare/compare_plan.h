@@ -28,6 +28,7 @@ struct CompareOptions {
   bool no_facet_cycles = false;
   std::size_t max_cycle_triangles = 1000000;  // facet-path cycle runs above this are skipped
   Limits limits;  // loading and tessellation bounds (--max-*)
+  bool view_cull = true;  // the loader's view culling (modeling/loader/view_culling.h), at the final size
 };
 
 constexpr const char* kDefaultTolerances = "4,2,1,0.5,0.25";

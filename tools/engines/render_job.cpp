@@ -26,7 +26,8 @@ RenderJobResult runRenderJob(const RenderJob& job) {
                                 " applies to the accuracy line's reference, which " +
                                 (job.engine == "reference" ? "the reference engine does not print"
                                                            : "--no-accuracy turns off"));
-  out.scene = loadScene(job.scene_path, job.options.limits);
+  checkImageSize(job.width, job.height);
+  out.scene = loadScene(job.scene_path, job.options.limits, ViewCulling{job.view_cull, job.width, job.height});
   applyImageSize(out.scene, job.width, job.height);
   EngineOptions options = job.options;
   std::unique_ptr<ReferenceCache> cache;

@@ -11,6 +11,7 @@ struct RenderJob {
   std::string scene_path;
   std::string engine = "reference";
   int width = 0, height = 0;  // 0: the scene's own size (image_size.h)
+  bool view_cull = true;      // the loader's view culling at that size (modeling/loader/view_culling.h)
   std::string color_path;     // empty: not written
   std::string ids_path;
   std::string depth_path;

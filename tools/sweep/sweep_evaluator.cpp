@@ -78,10 +78,16 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
   const std::string refText = doc.dump();
   if (knobs.contains("scene.reduction_level"))
     patchObjects(doc, "algebraic", "level", knobs["scene.reduction_level"], scenePath, "scene.reduction_level", true);
-  Scene scene = parseScene(doc.dump(), scenePath, src.dir);
+  // The scene is culled against the view at the size it is rendered at (view_culling.h).
+  ViewCulling view;
   if (knobs.contains("scene.size")) {
-    scene.width = knobs["scene.size"][0].get<int>();
-    scene.height = knobs["scene.size"][1].get<int>();
+    view.width = knobs["scene.size"][0].get<int>();
+    view.height = knobs["scene.size"][1].get<int>();
+  }
+  Scene scene = parseScene(doc.dump(), scenePath, src.dir, Limits{}, view);
+  if (knobs.contains("scene.size")) {
+    scene.width = view.width;
+    scene.height = view.height;
   }
   nlohmann::ordered_json row;
   row["scene"] = src.name;
@@ -98,7 +104,7 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
 
   const int w = scene.width, h = scene.height;
   const std::size_t rendersBefore = cache_.renders();
-  const FrameBuffer ref = cache_.get(refText, src.dir, w, h, [&] { return parseScene(refText, scenePath, src.dir); },
+  const FrameBuffer ref = cache_.get(refText, src.dir, w, h, [&] { return parseScene(refText, scenePath, src.dir, Limits{}, ViewCulling{true, w, h}); },
                                      threads_);
   const auto t0 = std::chrono::steady_clock::now();
   HwStats stats;
@@ -115,6 +121,7 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
   row["frame_ms"] = ft * 1e3;
   row["fps"] = ft > 0 ? 1.0 / ft : 0.0;
   row["gates_kge"] = stats.cost.totalGe() / 1e3;
+  row["gates_needed_kge"] = stats.has_needs ? stats.cost_needed.totalGe() / 1e3 : row["gates_kge"].get<double>();
   row["host_seconds"] = hostS;
   row["reference_rendered"] = cache_.renders() > rendersBefore;
   if (thumbWidth_ > 0 && !thumbName.empty()) {
