@@ -32,6 +32,7 @@
 #include "modeling/loader/scene_loader.h"
 #include "raster/reference/reference_renderer.h"
 #include "tools/cli/commands.h"
+#include "tools/report/build_info.h"
 #include "tools/engines/image_size.h"
 #include "tools/cli/limit_options.h"
 #include "tools/cli/view_cull_option.h"
@@ -136,7 +137,7 @@ void runBench(const BenchArgs& a) {
   const HwConfig cfg = a.config.empty() ? HwConfig() : loadHwConfig(a.config);
   std::vector<std::string> scenes = a.scenes;
   if (scenes.empty())
-    scenes = {std::string(QACC_SOURCE_DIR) + "/scenes/molecule.json", std::string(QACC_SOURCE_DIR) + "/scenes/sphereflake.json"};
+    scenes = {qaccSourceDir() + "/scenes/molecule.json", qaccSourceDir() + "/scenes/sphereflake.json"};
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<int> threads = a.threads;
   if (threads.empty()) threads = cores > 1 ? std::vector<int>{1, cores} : std::vector<int>{1};

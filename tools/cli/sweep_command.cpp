@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tools/cli/commands.h"
+#include "tools/report/build_info.h"
 #include "tools/engines/reference_cache.h"
 #include "tools/sweep/sweep_runner.h"
 
@@ -41,7 +42,7 @@ std::string shellQuote(const std::string& s) {
 }
 
 void makeReport(const std::string& out) {
-  const std::string script = std::string(QACC_SOURCE_DIR) + "/tools/plot_sweep.py";
+  const std::string script = qaccToolsDir() + "/plot_sweep.py";
   // Debian's interpreter, where python3-matplotlib is, before any other python3 on PATH.
   const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
   const std::string cmd = python + " " + shellQuote(script) + " " + shellQuote(out);

@@ -5,13 +5,14 @@
 #ifndef QACC_GIT_VERSION
 #define QACC_GIT_VERSION "unknown"
 #endif
-#ifndef QACC_TOOLS_DIR
-#define QACC_TOOLS_DIR "tools"
+#ifndef QACC_SOURCE_DIR
+#define QACC_SOURCE_DIR "."
 #endif
 
 namespace qacc {
 
 const char* qaccVersion() { return QACC_GIT_VERSION; }
-std::string qaccToolsDir() { return QACC_TOOLS_DIR; }
+std::string qaccSourceDir() { return QACC_SOURCE_DIR; }
+std::string qaccToolsDir() { return qaccSourceDir() + "/tools"; }
 
 }  // namespace qacc

@@ -7,6 +7,9 @@
 namespace qacc {
 
 const char* qaccVersion();
+// The source tree this qacc was built from (the only file compiled with its path, so that
+// the compiler cache serves every other object to any checkout), and its tools/ folder.
+std::string qaccSourceDir();
 std::string qaccToolsDir();
 
 }  // namespace qacc
