@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "modeling/algebraic/marching_tetrahedra.h"
+#include "modeling/tessellation/screen_error.h"
 
 namespace qacc::tess {
 
@@ -47,11 +48,13 @@ Eigen::AlignedBox3d surfaceBox(const Quadric& q, const Eigen::AlignedBox3d& box,
 // Marching tetrahedra (marchKuhnGrid) over `box` with about n cells along the longest side;
 // edge points start at the linear interpolation and take Newton steps onto the quadric.
 void marchQuadricBox(SurfaceBuilder& sb, const Quadric& q, const Eigen::AlignedBox3d& box0, int n) {
+  // Padded by a cell and a half: the marching mesh's own boundary (on the box faces, its
+  // vertices then moved by Newton steps) must lie beyond the clip planes, which cut it.
   Eigen::AlignedBox3d box = box0;
-  const Vector3d pad = 1e-3 * box.sizes() + Vector3d::Constant(1e-9);
+  const Vector3d pad = Vector3d::Constant(1.5 * box.sizes().maxCoeff() / std::max(1, n) + 1e-9);
   box.extend(box.max() + pad);
   box.extend(box.min() - pad);
-  const double h = box.sizes().maxCoeff() / n;
+  const double h = box0.sizes().maxCoeff() / std::max(1, n);  // the cell of the unpadded box
   Eigen::Vector3i dims;
   for (int a = 0; a < 3; ++a) dims[a] = std::max(1, int(std::ceil(box.sizes()[a] / h - 1e-9)));
   auto point = [&](const Eigen::Vector3i& c) { return Vector3d(box.min() + h * c.cast<double>()); };
@@ -98,6 +101,43 @@ void marchQuadricPiece(SurfaceBuilder& sb, const Quadric& q, const Eigen::Aligne
                        const std::vector<HalfSpace>& planes, int target) {
   const int n = std::max(4, int(std::lround(std::sqrt(std::max(2, target) / 3.0))));
   marchQuadricBox(sb, q, surfaceBox(q, box, planes), n);
+}
+
+int marchingCellsForPixelError(const Quadric& q, const Eigen::AlignedBox3d& box, const std::vector<HalfSpace>& planes,
+                               const ScreenView& view, double epsilon, double scale, int max_triangles) {
+  constexpr int kCoarse = 8;
+  constexpr int kMaxCells = 128;  // the value grid is (n + 1)³ doubles: 17 MB
+  TriangleMesh3 probe;
+  CapSegments caps;
+  Domain identity;
+  identity.linear = true;
+  identity.position = [](const Vector3d& p) { return p; };
+  SurfaceBuilder sb{q, identity, planes, 0, probe, caps};
+  marchQuadricBox(sb, q, box, kCoarse);
+  const Matrix3d H = 2.0 * q.Q.topLeftCorner<3, 3>();
+  const double margin = 0.1 * std::max(view.width, view.height);
+  double aSeen = 0, aAll = 0;
+  for (const Vector3d& p : probe.positions) {
+    const Vector3d g = q.gradient(p);
+    const double gn = g.norm();
+    if (!(gn > 1e-12 * (1 + p.norm())) || !view.inFront(p)) continue;
+    const Vector3d n = g / gn;
+    const Matrix3d P = Matrix3d::Identity() - n * n.transpose();
+    const Matrix3d T = P * H * P / gn;  // shape operator: the principal curvatures and 0
+    const double kappa = Eigen::SelfAdjointEigenSolver<Matrix3d>(T, Eigen::EigenvaluesOnly).eigenvalues().cwiseAbs().maxCoeff();
+    const double a = view.pixelsPerUnit(p) * kappa;
+    aAll = std::max(aAll, a);
+    if (view.onScreen(p, margin)) aSeen = std::max(aSeen, a);
+  }
+  const double A = aSeen > 0 ? aSeen : aAll;
+  if (!(A > 0)) return kCoarse;  // flat: the coarse cells are exact
+  const double h = std::sqrt(2.0 * 0.8 * epsilon / A) / scale;
+  const double side = box.sizes().maxCoeff();
+  double n = std::ceil(side / h);
+  // The surface crosses about (triangles of the probe) (n / kCoarse)² cells; keep that in budget.
+  const double perCell = std::max<double>(1.0, double(probe.size())) / (kCoarse * kCoarse);
+  n = std::min(n, std::sqrt(std::max(1, max_triangles) / perCell));
+  return int(std::clamp(n, 4.0, double(kMaxCells)));
 }
 
 }  // namespace qacc::tess

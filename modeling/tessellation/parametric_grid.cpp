@@ -65,8 +65,16 @@ void emitGrid(SurfaceBuilder& sb, const Grid& g, double v0, double v1, const std
     }
 }
 
+GridChooser gridByTarget(QuadricType type, int target) {
+  return [type, target](double v0, double v1) {
+    Grid g = gridFor(type, target);
+    if (type == QuadricType::EllipticCone && v0 < 0 && v1 > 0) g.nu = std::max(3, g.nu / 2);
+    return g;
+  };
+}
+
 bool emitNaturalQuadricGrid(SurfaceBuilder& sb, Domain& domain, QuadricType type, const Frame& f, double ltol,
-                            const std::vector<Vector3d>& regionVertices, int target) {
+                            const std::vector<Vector3d>& regionVertices, const GridChooser& choose) {
   switch (type) {
     case QuadricType::Ellipsoid: {
       const Vector3d c = -f.E.ldlt().solve(f.g);
@@ -79,7 +87,7 @@ bool emitNaturalQuadricGrid(SurfaceBuilder& sb, Domain& domain, QuadricType type
         const double cv = v <= 0 ? 1.0 : (v >= M_PI ? -1.0 : std::cos(v));
         return Vector3d(c + V * Vector3d(a.x() * sv * std::cos(u), a.y() * sv * std::sin(u), a.z() * cv));
       };
-      emitGrid(sb, gridFor(type, target), 0.0, M_PI);
+      emitGrid(sb, choose(0.0, M_PI), 0.0, M_PI);
       break;
     }
     case QuadricType::EllipticCylinder: {
@@ -93,7 +101,7 @@ bool emitNaturalQuadricGrid(SurfaceBuilder& sb, Domain& domain, QuadricType type
         const double u = wrapU(uv.x());
         return Vector3d(c + a1 * std::cos(u) * V.col(0) + a2 * std::sin(u) * V.col(1) + uv.y() * V.col(2));
       };
-      emitGrid(sb, gridFor(type, target), t0, t1);
+      emitGrid(sb, choose(t0, t1), t0, t1);
       break;
     }
     case QuadricType::EllipticCone:
@@ -112,13 +120,10 @@ bool emitNaturalQuadricGrid(SurfaceBuilder& sb, Domain& domain, QuadricType type
           const double r = std::sqrt(std::max(0.0, l3 * t * t - Jp));
           return Vector3d(c + r * (s1 * std::cos(u) * V.col(0) + s2 * std::sin(u) * V.col(1)) + t * V.col(2));
         };
-        Grid g = gridFor(type, target);
-        if (type == QuadricType::EllipticCone && t0 < 0 && t1 > 0) g.nu = std::max(3, g.nu / 2);
-        emitGrid(sb, g, t0, t1, {0.0});
+        emitGrid(sb, choose(t0, t1), t0, t1, {0.0});
       } else {
         // Sheets t = ±t0 cosh s, radius √J' sinh s (s >= 0), one grid per sheet.
         const double tv = std::sqrt(Jp / l3), rj = std::sqrt(Jp);
-        Grid g = gridFor(type, target);
         for (double sheet : {1.0, -1.0}) {
           const double reach = sheet > 0 ? t1 : -t0;
           if (reach <= tv) continue;
@@ -129,7 +134,7 @@ bool emitNaturalQuadricGrid(SurfaceBuilder& sb, Domain& domain, QuadricType type
             return Vector3d(c + r * (s1 * std::cos(u) * V.col(0) + s2 * std::sin(u) * V.col(1)) +
                             sheet * tv * std::cosh(s) * V.col(2));
           };
-          emitGrid(sb, g, 0.0, smax);
+          emitGrid(sb, choose(0.0, smax), 0.0, smax);
         }
       }
       break;
@@ -149,7 +154,7 @@ bool emitNaturalQuadricGrid(SurfaceBuilder& sb, Domain& domain, QuadricType type
         return Vector3d(c + r * (s1 * std::cos(u) * V.col(0) + s2 * std::sin(u) * V.col(1)) +
                         (tv - r * r / (2 * h)) * V.col(2));
       };
-      emitGrid(sb, gridFor(type, target), 0.0, rmax);
+      emitGrid(sb, choose(0.0, rmax), 0.0, rmax);
       break;
     }
     default: return false;

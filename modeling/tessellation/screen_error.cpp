@@ -38,6 +38,10 @@ double ScreenView::maxPixelsPerUnit(const Eigen::AlignedBox3d& box) const {
   return focal * std::max(dmax, Z) / (Z * Z);
 }
 
+bool ScreenView::inFront(const Eigen::Vector3d& p) const {
+  return -(view * p.homogeneous()).z() >= camera.near;
+}
+
 Eigen::Vector2d ScreenView::project(const Eigen::Vector3d& p) const {
   const Eigen::Vector4d w = window * p.homogeneous();
   return w.head<2>() / w.w();
@@ -55,9 +59,13 @@ bool ScreenView::boxOnScreen(const Eigen::AlignedBox3d& box, double margin) cons
   if (box.isEmpty()) return false;
   Eigen::AlignedBox2d proj;
   double zmin = 1e300, zmax = -1e300;
+  int behind = 0;
+  for (int c = 0; c < 8; ++c)
+    if (!inFront(box.corner(Eigen::AlignedBox3d::CornerType(c)))) ++behind;
+  if (behind == 8) return false;  // wholly nearer than the near plane or behind the eye
+  if (behind > 0) return true;    // reaches across the near plane: keep it
   for (int c = 0; c < 8; ++c) {
     const Eigen::Vector4d w = window * box.corner(Eigen::AlignedBox3d::CornerType(c)).homogeneous();
-    if (!(w.w() > 0)) return true;  // reaches behind the eye: keep it
     const Eigen::Vector3d x = w.head<3>() / w.w();
     proj.extend(x.head<2>());
     zmin = std::min(zmin, x.z());

@@ -37,6 +37,8 @@ class ScreenView {
   // Whether the window point of p lies in front of the eye, between the near and far planes
   // and within `margin` pixels of the image.
   bool onScreen(const Eigen::Vector3d& p, double margin) const;
+  // Whether p is beyond the near plane (its depth can be drawn).
+  bool inFront(const Eigen::Vector3d& p) const;
   // (x, y) window position; valid when p is in front of the eye.
   Eigen::Vector2d project(const Eigen::Vector3d& p) const;
   // Whether any part of the box can be on screen (conservative: its projected corners'

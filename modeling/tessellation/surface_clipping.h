@@ -34,6 +34,18 @@ struct PointKey {
 struct Domain {
   std::function<Vector3d(const Vector3d&)> position;
   bool linear = false;  // position() is affine: cut exactly, no bisection
+  // Linear domains of a curved surface (marching tetrahedra: world points on chords): the
+  // surface (normalised) onto which cut points are moved within their plane, so that a
+  // piece's boundary vertices lie on the curve where the surface meets the plane, as the
+  // parametric grids' do (shared_boundaries.h); null for planes.
+  const Quadric* surface = nullptr;
+
+  // x (on plane h) moved within h onto the surface by Newton steps along the gradient's
+  // component in the plane; x unchanged when that does not converge within `reach`.
+  Vector3d ontoCurve(const Vector3d& x, const HalfSpace& h, double reach) const;
+  // x (on planes h1 and h2) moved along their common line onto the surface (the nearer root
+  // of a quadratic); x unchanged when there is none within `reach`.
+  Vector3d ontoCorner(const Vector3d& x, const HalfSpace& h1, const HalfSpace& h2, double reach) const;
 
   Vector3d cut(Vector3d a, Vector3d b, const HalfSpace& h) const {
     if (lexLess(b, a)) std::swap(a, b);  // the same edge always gives the same point

@@ -12,12 +12,15 @@
 
 #include "modeling/geometry/primitive_bounds.h"
 #include "modeling/geometry/quadric_type.h"
+#include "modeling/support/parallel_errors.h"
 #include "modeling/tessellation/clip_region.h"
 #include "modeling/tessellation/exact_facets.h"
+#include "modeling/tessellation/grid_density.h"
 #include "modeling/tessellation/marching_piece.h"
 #include "modeling/tessellation/parametric_grid.h"
 #include "modeling/tessellation/quadric_frame.h"
 #include "modeling/tessellation/screen_error.h"
+#include "modeling/tessellation/shared_boundaries.h"
 #include "modeling/tessellation/solid_caps.h"
 #include "modeling/tessellation/surface_builder.h"
 
@@ -71,7 +74,36 @@ void addCaps(const CapSegments& caps, std::size_t capPlanes, const std::vector<H
   for (std::size_t k = 0; k < capPlanes; ++k) buildCap(k, caps.per_plane[k], planes, polyVerts, q, mesh);
 }
 
-PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Camera* camera, double aspect,
+// How fine: a triangle budget, or (view set) a projected chord error in pixels, the grid
+// counts and marching cells from the curvature (grid_density.h, marching_piece.h) times
+// `scale` (the refinement when a measurement finds the bound missed).
+struct Level {
+  int target = 128;
+  const ScreenView* view = nullptr;
+  double epsilon = 0;
+  double scale = 1;
+  int max_triangles = 1 << 20;
+  const PrimitiveBounds* bounds = nullptr;  // the piece's exact extent (pixel error: coverage check)
+};
+
+// Grid counts for the level, the total kept within max_triangles.
+GridChooser gridChooser(const Level& lv, QuadricType type, const Domain& domain, const Quadric& q,
+                        const std::vector<HalfSpace>& planes) {
+  if (!lv.view) return gridByTarget(type, lv.target);
+  return [&lv, &domain, &q, &planes](double v0, double v1) {
+    const ProjectedCurvature c = projectedCurvature(domain, q, v0, v1, planes, *lv.view);
+    Grid g = gridForPixelError(c, v0, v1, lv.epsilon, lv.scale);
+    const double n = 2.0 * g.nu * g.nv;
+    if (n > lv.max_triangles) {
+      const double shrink = std::sqrt(lv.max_triangles / n);
+      g.nu = std::max(3, int(g.nu * shrink));
+      g.nv = std::max(1, int(g.nv * shrink));
+    }
+    return g;
+  };
+}
+
+PrimitiveTessellation tessellateOnce(const Primitive& prim, const Level& lv, const Camera* camera, double aspect,
                                      int chordSamples, bool forceMarching = false) {
   PrimitiveTessellation out;
   const Quadric q = prim.quadric.normalized();
@@ -88,7 +120,7 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Ca
   Domain domain;
   const std::size_t capPlanes = (prim.solid && !prim.isPlanar()) ? prim.clip.size() : 0;
   SurfaceBuilder sb{q, domain, region.planes, capPlanes, out.mesh, caps};
-  if (emitNaturalQuadricGrid(sb, domain, type, f, ltol, region.vertices, target)) {
+  if (emitNaturalQuadricGrid(sb, domain, type, f, ltol, region.vertices, gridChooser(lv, type, domain, q, region.planes))) {
     out.method = TessellationMethod::Parametric;
   } else if (type == QuadricType::Plane) {
     out.method = TessellationMethod::Planar;
@@ -97,7 +129,14 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Ca
     out.method = TessellationMethod::MarchingTetrahedra;
     domain.linear = true;
     domain.position = [](const Vector3d& p) { return p; };
-    marchQuadricPiece(sb, q, region.box, region.planes, target);
+    domain.surface = &q;
+    if (lv.view) {
+      const Eigen::AlignedBox3d box = surfaceBox(q, region.box, region.planes);
+      const int n = marchingCellsForPixelError(q, box, region.planes, *lv.view, lv.epsilon, lv.scale, lv.max_triangles);
+      marchQuadricBox(sb, q, box, n);
+    } else {
+      marchQuadricPiece(sb, q, region.box, region.planes, lv.target);
+    }
   }
   out.surface_triangles = out.mesh.size();
   addCaps(caps, capPlanes, region.planes, q, out.mesh);
@@ -106,22 +145,62 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, int target, const Ca
   const ChordError ce = measureChordError(out.mesh, prim.quadric, 0, out.surface_triangles, chordSamples);
   out.max_chord_error = ce.max;
   out.mean_chord_error = ce.mean;
+  if (lv.view) {
+    const PixelError pe = measurePixelError(out.mesh, prim.quadric, *lv.view, 0, out.surface_triangles, chordSamples);
+    out.max_pixel_error = pe.max;
+    out.mean_pixel_error = pe.mean;
+  }
   return out;
+}
+
+// Whether the mesh reaches the piece's exact extent in every direction (within `tol`).
+bool reachesBounds(const TriangleMesh3& mesh, const Eigen::AlignedBox3d& bounds, double tol) {
+  Eigen::AlignedBox3d box;
+  for (const auto& p : mesh.positions) box.extend(p);
+  if (box.isEmpty()) return false;
+  return ((box.min() - bounds.min()).array() <= tol).all() && ((bounds.max() - box.max()).array() <= tol).all();
 }
 
 // A parametric grid spans the whole natural surface; a small clipped piece of a large
 // surface (a Bernstein-Bézier cell far out on a hyperboloid sheet) can receive few or none
-// of its triangles. When a clipped piece gets under a quarter of its target, marching
-// tetrahedra over the piece's own region is tried and the denser mesh kept.
-PrimitiveTessellation tessellateCovering(const Primitive& prim, int target, const Camera* camera, double aspect,
+// of its triangles. With a triangle budget: when a clipped piece gets under a quarter of its
+// target, marching tetrahedra over the piece's own region is tried and the denser mesh
+// kept. To a pixel error: when the mesh of a bounded clipped piece falls short of the
+// piece's exact extent (primitive_bounds.h) by more than 2ε pixels, the grid is refined
+// (x2, up to three times), then marching tetrahedra is tried and kept if it reaches further.
+PrimitiveTessellation tessellateCovering(const Primitive& prim, const Level& lv, const Camera* camera, double aspect,
                                          int chordSamples) {
-  PrimitiveTessellation t = tessellateOnce(prim, target, camera, aspect, chordSamples);
+  PrimitiveTessellation t = tessellateOnce(prim, lv, camera, aspect, chordSamples);
   const bool parametric = t.method == TessellationMethod::Parametric || t.method == TessellationMethod::Empty;
-  if (!prim.clip.empty() && !prim.isPlanar() && parametric && 4 * t.surface_triangles < std::size_t(target)) {
-    PrimitiveTessellation m = tessellateOnce(prim, target, camera, aspect, chordSamples, true);
-    if (m.surface_triangles > t.surface_triangles) return m;
+  if (prim.clip.empty() || prim.isPlanar() || !parametric) return t;
+  if (!lv.view) {
+    if (4 * t.surface_triangles < std::size_t(lv.target)) {
+      PrimitiveTessellation m = tessellateOnce(prim, lv, camera, aspect, chordSamples, true);
+      if (m.surface_triangles > t.surface_triangles) return m;
+    }
+    return t;
+  }
+  if (!lv.bounds || !lv.bounds->bounded || lv.bounds->empty) return t;
+  const Eigen::AlignedBox3d& box = lv.bounds->box;
+  const double tol = 2 * lv.epsilon / lv.view->maxPixelsPerUnit(box) + 1e-9 * box.sizes().norm();
+  Level finer = lv;
+  for (int round = 0; round < 3 && !reachesBounds(t.mesh, box, tol); ++round) {
+    finer.scale *= 2;
+    if (2.0 * t.mesh.size() > lv.max_triangles) break;
+    t = tessellateOnce(prim, finer, camera, aspect, chordSamples);
+  }
+  if (!reachesBounds(t.mesh, box, tol)) {
+    PrimitiveTessellation m = tessellateOnce(prim, lv, camera, aspect, chordSamples, true);
+    if (reachesBounds(m.mesh, box, tol) || m.surface_triangles > t.surface_triangles) return m;
   }
   return t;
+}
+
+PrimitiveTessellation tessellateCovering(const Primitive& prim, int target, const Camera* camera, double aspect,
+                                         int chordSamples) {
+  Level lv;
+  lv.target = target;
+  return tessellateCovering(prim, lv, camera, aspect, chordSamples);
 }
 
 void checkOptions(const TessellationOptions& options) {
@@ -131,23 +210,43 @@ void checkOptions(const TessellationOptions& options) {
     throw std::invalid_argument("tessellation: pixel_error must be a finite number >= 0");
 }
 
-// pixel_error mode: refined until the measured projected chord error is at most the bound.
+// pixel_error mode: grid counts and marching cells from the projected curvature. When the
+// measured error is under ε/2 the counts are scaled down once by √(measured / 0.8ε) and the
+// coarser mesh kept if it measures within ε; when the
+// measured error still exceeds the bound (terms the second-order estimate neglects), the
+// counts are scaled by the square root of the excess, at most three times. Pieces entirely
+// off screen get the coarsest mesh.
 PrimitiveTessellation tessellateToPixels(const Primitive& prim, const TessellationOptions& options,
                                          const Camera* camera, double aspect, const ScreenView& view) {
   const PrimitiveBounds bounds = primitiveBounds(prim);
-  int target = 8;
-  auto measured = [&](PrimitiveTessellation t) {
-    const PixelError pe = measurePixelError(t.mesh, prim.quadric, view, 0, t.surface_triangles, options.chord_samples);
-    t.max_pixel_error = pe.max;
-    t.mean_pixel_error = pe.mean;
+  if (bounds.empty || (bounds.bounded && !view.boxOnScreen(bounds.box, 2.0))) {
+    Level coarse;
+    coarse.target = 8;
+    return tessellateOnce(prim, coarse, camera, aspect, options.chord_samples);
+  }
+  Level lv;
+  lv.view = &view;
+  lv.epsilon = options.pixel_error;
+  lv.max_triangles = options.max_triangles;
+  lv.bounds = &bounds;
+  const int samples = std::max(3, options.chord_samples);  // the centre of each triangle too
+  PrimitiveTessellation t = tessellateCovering(prim, lv, camera, aspect, samples);
+  const bool refinable = t.method != TessellationMethod::Planar && t.method != TessellationMethod::Empty;
+  if (!refinable || t.max_pixel_error <= 0) return t;
+  const double eps = options.pixel_error;
+  if (t.max_pixel_error < 0.5 * eps) {
+    // The curvature bound is loose here (the largest curvature and scale over the piece set
+    // the whole grid): one coarser try, kept when its measured error stays within ε.
+    Level coarser = lv;
+    coarser.scale *= std::sqrt(t.max_pixel_error / (0.8 * eps));
+    PrimitiveTessellation c = tessellateCovering(prim, coarser, camera, aspect, samples);
+    if (c.max_pixel_error <= eps && c.mesh.size() < t.mesh.size()) return c;
     return t;
-  };
-  PrimitiveTessellation t = measured(tessellateCovering(prim, target, camera, aspect, options.chord_samples));
-  if (bounds.empty || (bounds.bounded && !view.boxOnScreen(bounds.box, 2.0))) return t;  // off screen: coarsest
-  while (t.max_pixel_error > options.pixel_error && t.method != TessellationMethod::Planar &&
-         t.method != TessellationMethod::Empty && target * 2 <= options.max_triangles) {
-    target *= 2;
-    t = measured(tessellateCovering(prim, target, camera, aspect, options.chord_samples));
+  }
+  for (int round = 0; round < 3 && t.max_pixel_error > eps && t.mesh.size() < std::size_t(options.max_triangles);
+       ++round) {
+    lv.scale *= std::min(4.0, 1.1 * std::sqrt(t.max_pixel_error / eps));
+    t = tessellateCovering(prim, lv, camera, aspect, samples);
   }
   return t;
 }
@@ -175,49 +274,83 @@ PrimitiveTessellation tessellatePrimitive(const Primitive& prim, const Tessellat
 
 TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& options, TessellationReport* report) {
   checkOptions(options);
-  TriangleMesh3 all;
   TessellationReport rep;
   const double aspect = double(scene.width) / double(scene.height);
   const ScreenView view(scene.camera, scene.width, scene.height);
+  const std::size_t n = scene.primitives.size();
+  // Which primitives are drawn by their object's exact surface (at the object's first piece).
+  std::vector<int> exactOf(n, -1);
+  std::vector<bool> exactFirst(n, false);
+  {
+    std::vector<bool> exactDone(scene.exact_surfaces.size(), false);
+    for (std::size_t i = 0; i < n; ++i) {
+      const int o = scene.primitives[i].object;
+      const SceneObject* object = o >= 0 && std::size_t(o) < scene.objects.size() ? &scene.objects[std::size_t(o)] : nullptr;
+      const int e = object ? object->exact_surface : -1;
+      if (e < 0 || std::size_t(e) >= scene.exact_surfaces.size()) continue;
+      exactOf[i] = e;
+      exactFirst[i] = !exactDone[std::size_t(e)];
+      exactDone[std::size_t(e)] = true;
+    }
+  }
+  // Pieces, in parallel (each depends on its primitive and the view only).
+  std::vector<PrimitiveTessellation> pieces(n);
+  ParallelErrors errors;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long i = 0; i < long(n); ++i)
+    errors.run([&] {
+      if (exactOf[std::size_t(i)] < 0)
+        pieces[std::size_t(i)] = tessellatePrimitive(scene.primitives[std::size_t(i)], options, &scene.camera, aspect, &view);
+    });
+  errors.rethrow();
+  // Shared boundaries sampled once for both sides (shared_boundaries.h).
+  std::vector<TriangleMesh3*> meshes(n, nullptr);
+  std::vector<std::size_t> surface(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (exactOf[i] < 0) {
+      meshes[i] = &pieces[i].mesh;
+      surface[i] = pieces[i].surface_triangles;
+    }
+  tess::stitchSharedBoundaries(scene.primitives, meshes, surface);
+
+  TriangleMesh3 all;
   double meanSum = 0, pixelMeanSum = 0;
   std::size_t measured = 0;
-  std::vector<bool> exactDone(scene.exact_surfaces.size(), false);
-  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     const Primitive& p = scene.primitives[i];
-    const SceneObject* object =
-        p.object >= 0 && std::size_t(p.object) < scene.objects.size() ? &scene.objects[std::size_t(p.object)] : nullptr;
-    const int e = object ? object->exact_surface : -1;
-    if (e >= 0 && std::size_t(e) < scene.exact_surfaces.size()) {
+    if (exactOf[i] >= 0) {
       // The object's true surface replaces its pieces, drawn once at its first piece.
-      if (exactDone[std::size_t(e)]) continue;
-      exactDone[std::size_t(e)] = true;
-      const ExactSurface& surface = *scene.exact_surfaces[std::size_t(e)];
-      ExactSurfaceMesh em = tess::tessellateExact(surface, object->count, options, &view);
+      if (!exactFirst[i]) continue;
+      const ExactSurface& surf = *scene.exact_surfaces[std::size_t(exactOf[i])];
+      ExactSurfaceMesh em = tess::tessellateExact(surf, scene.objects[std::size_t(p.object)].count, options, &view);
       if (options.pixel_error > 0) {
-        const double px = em.max_error * view.maxPixelsPerUnit(surface.bounds());
-        rep.max_pixel_error = std::max(rep.max_pixel_error, px);
-        pixelMeanSum += em.mean_error * view.maxPixelsPerUnit(surface.bounds());
+        const double s = view.maxPixelsPerUnit(surf.bounds());
+        rep.max_pixel_error = std::max(rep.max_pixel_error, em.max_error * s);
+        pixelMeanSum += em.mean_error * s;
       }
+      const int grid = em.grid;
+      const double maxError = em.max_error, meanError = em.mean_error;
       const TriangleMesh3 t = tess::exactSurfaceFacets(std::move(em), p.object, p.material, int(i));
-      const std::size_t n = t.size();
       all.append(t);
       ++rep.exact_surfaces;
-      rep.exact_triangles += n;
-      rep.triangles += n;
-      rep.exact_grid = std::max(rep.exact_grid, em.grid);
-      rep.max_chord_error = std::max(rep.max_chord_error, em.max_error);
-      meanSum += em.mean_error;
+      rep.exact_triangles += t.size();
+      rep.triangles += t.size();
+      rep.exact_grid = std::max(rep.exact_grid, grid);
+      rep.max_chord_error = std::max(rep.max_chord_error, maxError);
+      meanSum += meanError;
       ++measured;
       continue;
     }
-    PrimitiveTessellation t = tessellatePrimitive(p, options, &scene.camera, aspect, &view);
-    const std::size_t n = t.mesh.size();
-    t.mesh.object.assign(n, p.object);
-    t.mesh.material.assign(n, p.material);
-    t.mesh.primitive.assign(n, int(i));
+    PrimitiveTessellation& t = pieces[i];
+    const std::size_t count = t.mesh.size();
+    t.cap_triangles = count - surface[i];
+    t.surface_triangles = surface[i];
+    t.mesh.object.assign(count, p.object);
+    t.mesh.material.assign(count, p.material);
+    t.mesh.primitive.assign(count, int(i));
     all.append(t.mesh);
     ++rep.primitives;
-    rep.triangles += n;
+    rep.triangles += count;
     rep.cap_triangles += t.cap_triangles;
     switch (t.method) {
       case TessellationMethod::Parametric: ++rep.parametric; break;
@@ -230,6 +363,7 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
     rep.max_pixel_error = std::max(rep.max_pixel_error, t.max_pixel_error);
     pixelMeanSum += t.mean_pixel_error;
     ++measured;
+    t.mesh = TriangleMesh3();  // appended: release it
   }
   rep.mean_chord_error = measured ? meanSum / double(measured) : 0.0;
   rep.mean_pixel_error = measured ? pixelMeanSum / double(measured) : 0.0;

@@ -123,6 +123,20 @@ Eigen::Vector3d closestPointOnQuadric(const Quadric& quadric, const Eigen::Vecto
 // Every undirected edge (vertices identified by exact position) is used by exactly two
 // triangles, and no triangle is degenerate.
 bool isWatertight(const TriangleMesh3& mesh);
+// The edges of a mesh by use (vertices identified by exact position): those used by one
+// triangle (with that triangle: the mesh's boundary, or a crack), the number used by more
+// than two, degenerate triangles (skipped).
+struct OpenEdge {
+  Eigen::Vector3d a, b;
+  std::size_t triangle;
+};
+struct EdgeUse {
+  std::size_t edges = 0;
+  std::vector<OpenEdge> open;
+  std::size_t overused = 0;
+  std::size_t degenerate = 0;
+};
+EdgeUse edgeUse(const TriangleMesh3& mesh);
 
 // The world-space half-spaces of the camera's view frustum (near, far, 4 sides).
 std::vector<HalfSpace> frustumHalfSpaces(const Camera& camera, double aspect);
