@@ -18,18 +18,8 @@ import math
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
+from plot_common import num  # noqa: E402  (also selects matplotlib's Agg backend)
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def num(v):
-    if isinstance(v, (int, float)):
-        return float(v)
-    if v == "inf":
-        return math.inf
-    return math.nan
 
 
 def ok_rows(rows):
