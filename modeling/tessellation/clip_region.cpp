@@ -17,8 +17,13 @@ std::vector<HalfSpace> frustumHalfSpaces(const Camera& camera, double aspect) {
     out.emplace_back(Vector4d(M.row(r).transpose() - side * M.row(3).transpose()));
     out.emplace_back(Vector4d(-M.row(r).transpose() - side * M.row(3).transpose()));
   }
-  out.emplace_back(Vector4d(M.row(2).transpose() - M.row(3).transpose()));
-  out.emplace_back(Vector4d(-M.row(2).transpose() - M.row(3).transpose()));
+  // Near and far just inside the depth range (1e-5 of it): a solid's cap on them (a leaf of
+  // a csg object bounded by the frustum, tessellation.h) is drawn, not clipped by GL, and
+  // its depth differs from the cleared depth buffer's 1 (the GL_EQUAL pass of
+  // facet_csg_draw.h would otherwise colour the far cap over the background).
+  const double depth = 1 - 1e-5;
+  out.emplace_back(Vector4d(M.row(2).transpose() - depth * M.row(3).transpose()));
+  out.emplace_back(Vector4d(-M.row(2).transpose() - depth * M.row(3).transpose()));
   return out;
 }
 

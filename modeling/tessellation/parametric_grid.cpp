@@ -49,7 +49,9 @@ Grid gridFor(QuadricType type, int target) {
 // Parametric grid over [u0,u1] x [v0,v1] (u periodic) through the builder.
 void emitGrid(SurfaceBuilder& sb, const Grid& g, double v0, double v1, const std::vector<double>& extra_v) {
   std::vector<double> vs;
-  for (int j = 0; j <= g.nv; ++j) vs.push_back(v0 + (v1 - v0) * j / g.nv);
+  // The last row exactly at v1 (v0 + (v1 - v0) nv / nv can miss it by an ulp: at an
+  // ellipsoid's pole, sin v would then differ from 0 and the pole would not close).
+  for (int j = 0; j <= g.nv; ++j) vs.push_back(j == g.nv ? v1 : v0 + (v1 - v0) * j / g.nv);
   const double snap = 1e-9 * (std::abs(v1 - v0) + std::abs(v0) + std::abs(v1));
   for (double e : extra_v) {
     for (double& v : vs)

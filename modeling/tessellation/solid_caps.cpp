@@ -242,16 +242,53 @@ void triangulateCapLoop(const std::vector<Vector3d>& loop, const Vector3d& n, co
   }
 }
 
+// A face of the region that the surface does not cross and that lies inside the solid (a
+// slab's bottom, the end of a hyperbolic cylinder's box): the whole face, its corners in
+// order around their centroid (a face of a convex polyhedron is convex), or nothing when a
+// corner on the plane is outside the solid. Corners closer than a rounding tolerance (a
+// vertex where more than three planes meet, found once per triple) count once.
+std::vector<Vector3d> wholeFace(const HalfSpace& h, const CapCorners& inside, const std::vector<Vector3d>& polytope,
+                                const Vector3d& b1, const Vector3d& b2) {
+  std::size_t onPlane = 0;
+  for (const auto& v : polytope) {
+    const double mag = h.p.head<3>().cwiseAbs().dot(v.cwiseAbs()) + std::abs(h.p[3]);
+    if (std::abs(h.eval(v)) <= 1e-9 * mag) ++onPlane;
+  }
+  if (inside.points.size() < 3 || inside.points.size() != onPlane) return {};
+  Eigen::AlignedBox3d box;
+  for (const auto& v : inside.points) box.extend(v);
+  const double tol = 1e-9 * (box.sizes().norm() + box.max().cwiseAbs().maxCoeff());
+  std::vector<Vector3d> face;
+  for (const auto& v : inside.points) {
+    bool seen = false;
+    for (const auto& w : face) seen = seen || (v - w).norm() <= tol;
+    if (!seen) face.push_back(v);
+  }
+  if (face.size() < 3) return {};
+  Vector3d m = Vector3d::Zero();
+  for (const auto& v : face) m += v;
+  m /= double(face.size());
+  std::sort(face.begin(), face.end(), [&](const Vector3d& a, const Vector3d& b) {
+    return std::atan2((a - m).dot(b2), (a - m).dot(b1)) < std::atan2((b - m).dot(b2), (b - m).dot(b1));
+  });
+  return face;
+}
+
 }  // namespace
 
 void buildCap(std::size_t k, const std::vector<CapSegment>& segs, const std::vector<HalfSpace>& planes,
               const std::vector<Vector3d>& polytope, const Quadric& q, TriangleMesh3& mesh) {
   const unsigned kbit = k < 32 ? (1u << k) : 0u;
   const CapCorners corners = capCorners(kbit, planes, polytope, q);
-  if (segs.size() < 2) return;
   const Vector3d n = planes[k].p.head<3>().normalized();
   const Vector3d b1 = (std::abs(n.x()) < 0.9 ? Vector3d::UnitX() : Vector3d::UnitY()).cross(n).normalized();
   const Vector3d b2 = n.cross(b1);
+  if (segs.empty() && kbit) {
+    const std::vector<Vector3d> face = wholeFace(planes[k], corners, polytope, b1, b2);
+    if (!face.empty()) triangulateCapLoop(face, n, b1, b2, mesh);
+    return;
+  }
+  if (segs.empty()) return;  // a face outside the solid
   for (const auto& loop : capLoops(capChains(segs), segs, corners, planes, kbit, n))
     triangulateCapLoop(loop, n, b1, b2, mesh);
 }

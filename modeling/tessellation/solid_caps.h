@@ -1,7 +1,8 @@
-// The caps of a solid primitive: on each of its own clip planes, the polygon bounded by
-// the surface's cut edges on that plane (surface_builder.h), closed along the lines where
-// two clip planes meet, triangulated by ear clipping in the plane (a fan from its centroid
-// when no ear is found). The cut edges are shared exactly, so a primitive's mesh is
+// The caps of a solid primitive: on each plane of its region (its clip planes, the view
+// frustum's when that bounds it), the polygon bounded by the surface's cut edges on that
+// plane (surface_builder.h), closed along the lines where two planes meet, or the whole
+// face when the surface does not cross it and its corners are inside the solid;
+// triangulated by ear clipping in the plane (a fan from its centroid when no ear is found). The cut edges are shared exactly, so a primitive's mesh is
 // watertight.
 #pragma once
 #include <cstddef>

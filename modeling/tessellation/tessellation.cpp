@@ -67,7 +67,7 @@ bool emitPlanarPiece(SurfaceBuilder& sb, Domain& domain, const Quadric& q, const
   return true;
 }
 
-// Caps on the primitive's own planes [0, capPlanes) from the segments the surface left.
+// Caps on the region's planes [0, capPlanes) from the segments the surface left.
 void addCaps(const CapSegments& caps, std::size_t capPlanes, const std::vector<HalfSpace>& planes, const Quadric& q,
              TriangleMesh3& mesh) {
   const std::vector<Vector3d> polyVerts = capPlanes ? polytopeVertices(planes) : std::vector<Vector3d>();
@@ -115,10 +115,13 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, const Level& lv, con
   const TessellationRegion region = tessellationRegion(prim, q, type, f, ltol, camera, aspect);
   if (region.empty) return out;
 
+  // A solid is closed: caps on every plane that bounds its region — its own clip planes,
+  // and the view frustum's when the frustum bounds it (region.planes) — for a planar solid
+  // (a slab, a half-space) as for a curved one. OpenCSG's parity counts need closed leaves.
+  const std::size_t capPlanes = prim.solid ? region.planes.size() : 0;
   CapSegments caps;
-  caps.per_plane.resize(prim.clip.size());
+  caps.per_plane.resize(capPlanes);
   Domain domain;
-  const std::size_t capPlanes = (prim.solid && !prim.isPlanar()) ? prim.clip.size() : 0;
   SurfaceBuilder sb{q, domain, region.planes, capPlanes, out.mesh, caps};
   if (emitNaturalQuadricGrid(sb, domain, type, f, ltol, region.vertices, gridChooser(lv, type, domain, q, region.planes))) {
     out.method = TessellationMethod::Parametric;

@@ -13,9 +13,11 @@
 //    degenerate types) is polygonised by marching tetrahedra (Kuhn split of a cubic grid,
 //    edge points refined onto the surface by Newton steps along the gradient) over the
 //    bounds of its clip polyhedron, then clipped by it;
-//  - solids get caps: on each clip plane, the polygon bounded by the surface's cut edges on
-//    that plane (closed along the lines where two clip planes meet), fanned from its centroid.
-//    The cut edges are shared exactly, so a primitive's mesh is watertight.
+//  - solids (planar ones too) get caps: on each plane of the region (the clip planes, and
+//    the frustum's when it bounds the piece), the polygon bounded by the surface's cut edges
+//    on that plane (closed along the lines where two planes meet), or the whole face when the
+//    surface does not cross it and it lies inside the solid. The cut edges are shared
+//    exactly, so a solid's mesh is closed (csg leaves need it: docs/CSG.md).
 // Unbounded pieces are limited to the view frustum (nothing outside it can be seen).
 // Normals are analytic: the quadric's gradient at each vertex (outward, towards f > 0);
 // caps use their plane normal.
@@ -138,7 +140,8 @@ struct EdgeUse {
 };
 EdgeUse edgeUse(const TriangleMesh3& mesh);
 
-// The world-space half-spaces of the camera's view frustum (near, far, 4 sides).
+// The world-space half-spaces of the camera's view frustum (4 sides widened by 5 %, near and far
+// 1e-5 of the depth range inside).
 std::vector<HalfSpace> frustumHalfSpaces(const Camera& camera, double aspect);
 
 }  // namespace qacc
