@@ -27,9 +27,7 @@ bool CsgIntervalPipelineUnit::tick(std::uint64_t now) {
     stages_.accept(t, std::uint64_t(interval));
     changed = true;
   }
-  if (stalled && !changed) countStall();
-  else if (changed || stages_.holdsWork()) countBusy();
-  else countIdle();
+  countCycle(changed, stalled, stages_.holdsWork());
   return changed;
 }
 

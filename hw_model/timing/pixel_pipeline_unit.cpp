@@ -36,9 +36,7 @@ bool PixelPipelineUnit::tick(std::uint64_t now) {
     countItem();
     changed = true;
   }
-  if (stalled && !changed) countStall();
-  else if (changed || stages_.holdsWork()) countBusy();
-  else countIdle();
+  countCycle(changed, stalled, stages_.holdsWork());
   return changed;
 }
 

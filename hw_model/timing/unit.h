@@ -41,6 +41,13 @@ class Unit {
   void countStall() { ++stats_.stall; }
   void countIdle() { ++stats_.idle; }
   void countItem() { ++stats_.items; }
+  // One cycle of a unit that can stall on its output: a stall when it wanted to move and
+  // nothing moved, busy when something moved or it holds work, idle otherwise.
+  void countCycle(bool changed, bool stalled, bool holding) {
+    if (stalled && !changed) countStall();
+    else if (changed || holding) countBusy();
+    else countIdle();
+  }
   UnitStats stats_;
 };
 

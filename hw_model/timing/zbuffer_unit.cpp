@@ -55,9 +55,7 @@ bool ZBufferUnit::tick(std::uint64_t now) {
     changed = true;
   }
   rr_ = (rr_ + 1) % P;
-  if (stalled && !changed) countStall();
-  else if (changed || holdsWork()) countBusy();
-  else countIdle();
+  countCycle(changed, stalled, holdsWork());
   return changed;
 }
 
