@@ -9,10 +9,12 @@
 #include <sstream>
 
 #include "modeling/geometry/natural_quadrics.h"
+#include "modeling/loader/frame_precision.h"
 #include "modeling/loader/object_registry.h"
 #include "modeling/geometry/placed_exact_surface.h"
 #include "modeling/geometry/unit_plane.h"
 #include "modeling/geometry/primitive_bounds.h"
+#include "modeling/scene/scene_origin.h"
 #include "modeling/scene/view_volume.h"
 #include "modeling/scene/strict_json.h"
 #include "modeling/support/bounded_file.h"
@@ -198,8 +200,11 @@ struct BuiltObject {
   std::vector<HalfSpace> clip;
 };
 
+// `origin` is the scene's origin for a top-level object (its placement is taken relative to
+// it, scene_origin.h) and zero for the parts of another object.
 BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, const std::map<std::string, int>& materials,
-                            const std::string& directory, const Limits& limits, const ViewVolume* worldView) {
+                            const std::string& directory, const Limits& limits, const ViewVolume* worldView,
+                            const Eigen::Vector3d& origin, const ScreenView* screen) {
   if (!o.isObject()) o.fail("expected an object with a \"type\"");
   BuiltObject out;
   const JsonNode typeNode = o.at("type");
@@ -223,6 +228,12 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
   }
   const bool solid = o.boolean("solid", false);
   if (auto t = o.get("transform")) out.transform = readTransform(*t);
+  if (!origin.isZero()) {
+    // Relative to the scene's origin: the translation loses the origin before any quadric is
+    // formed, so the coefficients stay of the object's own size.
+    out.transform.M.topRightCorner<3, 1>() -= origin;
+    out.transform.given = true;
+  }
   if (auto c = o.get("clip")) out.clip = readClip(*c);
 
   ObjectContext ctx{scene, directory, out.material, solid, has_material, {}, limits};
@@ -258,14 +269,33 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
     if (p.quadric.Q.topLeftCorner<3, 4>().cwiseAbs().maxCoeff() == 0.0)
       o.fail("object degenerates to a constant (sizes or scales too extreme for double precision)");
   }
-  if (ctx.view) {
+  // A top-level object's frame may give precision away (frame_precision.h): checked on the
+  // pieces that reach the view.
+  std::optional<FramePrecision> precision;
+  if (screen) precision.emplace(out.transform.given ? out.transform.M : Eigen::Matrix4d::Identity(), *screen);
+  if (ctx.view || precision) {
     // What the builder emitted beyond the view: a piece whose exact world bounds (padded,
     // primitive_bounds.h) miss the widened view volume cannot reach a pixel.
     std::vector<Primitive> kept;
     kept.reserve(out.prims.size());
     for (Primitive& p : out.prims) {
       const PrimitiveBounds b = primitiveBounds(p);
-      if (b.bounded && !b.empty && !worldView->mayContain(b.box)) continue;
+      if (!b.bounded || b.empty) {
+        kept.push_back(std::move(p));
+        continue;
+      }
+      if (ctx.view && !worldView->mayContain(b.box)) continue;
+      if (precision) {
+        const double px = precision->pixels(b.box);
+        if (px > kMaxFrameErrorPixels) {
+          std::ostringstream m;
+          m << "a piece of this object lies so far from its frame's origin that double precision leaves its surface "
+            << px << " pixels uncertain (at most " << kMaxFrameErrorPixels
+            << " supported): give its position with \"transform\": {\"translate\": ...} rather than in its own "
+               "coordinates (docs/SCENES.md, scenes far from the world origin)";
+          o.fail(m.str());
+        }
+      }
       kept.push_back(std::move(p));
     }
     out.prims = std::move(kept);
@@ -274,9 +304,9 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
 }
 
 void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::map<std::string, int>& materials,
-                const std::string& directory, const Limits& limits, const ViewVolume* view) {
+                const std::string& directory, const Limits& limits, const ViewVolume* view, const ScreenView& screen) {
   const std::size_t exactBefore = scene.exact_surfaces.size();
-  BuiltObject built = buildPrimitives(o, int(index), scene, materials, directory, limits, view);
+  BuiltObject built = buildPrimitives(o, int(index), scene, materials, directory, limits, view, scene.origin, &screen);
   if (scene.primitives.size() + built.prims.size() > limits.max_primitives)
     o.fail(Limits::exceeded("the scene", scene.primitives.size() + built.prims.size(), "primitives",
                             limits.max_primitives, "max-primitives"));
@@ -314,7 +344,8 @@ std::vector<Primitive> buildObject(const JsonNode& o, ObjectContext& parent, int
   std::map<std::string, int> materials;
   for (std::size_t i = 1; i < parent.scene.materials.size(); ++i) materials.emplace(parent.scene.materials[i].name, int(i));
   const std::size_t exactBefore = parent.scene.exact_surfaces.size();
-  BuiltObject built = buildPrimitives(o, objectIndex, parent.scene, materials, parent.directory, parent.limits, nullptr);
+  BuiltObject built = buildPrimitives(o, objectIndex, parent.scene, materials, parent.directory, parent.limits, nullptr,
+                                      Eigen::Vector3d::Zero(), nullptr);
   if (parent.scene.exact_surfaces.size() > exactBefore)
     o.fail("a '" + built.type + "' object has a non-quadric exact surface and cannot be a part of another object");
   return std::move(built.prims);
@@ -340,6 +371,12 @@ Scene parseScene(const std::string& text, const std::string& file, const std::st
   scene.camera = readCamera(root.at("camera"));
   if (auto l = root.get("lights")) scene.lights = readLights(*l);
   if (scene.lights.empty()) scene.lights = Scene::defaultLights(scene.camera);
+  // Everything from here on is relative to the scene's origin (scene_origin.h).
+  scene.origin = sceneOrigin(scene.camera);
+  scene.camera.eye -= scene.origin;
+  scene.camera.target -= scene.origin;
+  for (Light& l : scene.lights)
+    if (l.type == Light::Type::Point) l.position -= scene.origin;
 
   std::map<std::string, int> materials;
   if (auto m = root.get("materials")) readMaterials(*m, scene, materials);
@@ -348,11 +385,14 @@ Scene parseScene(const std::string& text, const std::string& file, const std::st
   const std::size_t n = objects.size();
   scene.objects.reserve(n);
   scene.primitives.reserve(n);  // at least one each; large scenes are mostly simple objects
+  // The size the scene is rendered at: what view culling and the frame's precision are judged at.
+  const int width = culling.width > 0 ? culling.width : scene.width;
+  const int height = culling.height > 0 ? culling.height : scene.height;
   std::optional<ViewVolume> view;
-  if (culling.enabled)
-    view = ViewVolume::of(scene.camera, culling.width > 0 ? culling.width : scene.width,
-                          culling.height > 0 ? culling.height : scene.height);
-  for (std::size_t i = 0; i < n; ++i) readObject(objects[i], i, scene, materials, directory, limits, view ? &*view : nullptr);
+  if (culling.enabled) view = ViewVolume::of(scene.camera, width, height);
+  const ScreenView screen(scene.camera, width, height);
+  for (std::size_t i = 0; i < n; ++i)
+    readObject(objects[i], i, scene, materials, directory, limits, view ? &*view : nullptr, screen);
   root.finish();
   return scene;
 }

@@ -29,6 +29,9 @@ struct Scene {
   int width = 640;
   int height = 480;
   Eigen::Vector3d background{0.05, 0.05, 0.08};  // linear RGB
+  // The frame every coordinate below is held in: world = scene coordinates + origin
+  // (scene_origin.h; 0 unless the view is far from the world origin).
+  Eigen::Vector3d origin{0, 0, 0};
   Camera camera;
   std::vector<Light> lights;        // never empty after loading (headlight + ambient default)
   std::vector<Material> materials;  // index 0 is the default light grey

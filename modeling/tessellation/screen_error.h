@@ -1,51 +1,17 @@
-// The scene's view as a tessellation sees it (tessellation.h, `pixel_error`): how many
-// pixels a world-space distance at a point covers in the image, and the projected chord
-// error of a mesh — the window-space distance between each chord-error sample of a
-// triangle and its closest point on the surface.
-//
-// Perspective: a displacement d at eye-space point (X, Y, −Z) moves the image point by at
-// most  f |p − eye| / Z² · |d|  pixels (f = height / (2 tan(fov_y / 2)), the focal length
-// in pixels; the largest singular value of the Jacobian of (X/Z, Y/Z) is √(1 + (X²+Y²)/Z²)
-// / Z). Orthographic: f = height / view height, constant. Depths are clamped to the near
-// plane (nothing nearer is drawn).
+// The projected chord error of a mesh (tessellation.h, `pixel_error`): the window-space
+// distance between each chord-error sample of a triangle and its closest point on the
+// surface, in the scene's view (scene/screen_view.h).
 #pragma once
 #include <cstddef>
 
 #include <Eigen/Dense>
 
 #include "modeling/geometry/quadric.h"
-#include "modeling/scene/camera.h"
+#include "modeling/scene/screen_view.h"
 
 namespace qacc {
 
 struct TriangleMesh3;
-
-class ScreenView {
- public:
-  Camera camera;
-  int width = 640, height = 480;
-  Eigen::Matrix4d view;    // world → eye
-  Eigen::Matrix4d window;  // world → window (homogeneous)
-  double focal = 1;        // pixels per unit of X/Z (perspective) or per world unit (orthographic)
-
-  ScreenView(const Camera& camera, int width, int height);
-
-  // Pixels per world unit at p (an upper bound over directions).
-  double pixelsPerUnit(const Eigen::Vector3d& p) const;
-  // An upper bound of pixelsPerUnit over a box.
-  double maxPixelsPerUnit(const Eigen::AlignedBox3d& box) const;
-  // Whether the window point of p lies in front of the eye, between the near and far planes
-  // and within `margin` pixels of the image.
-  bool onScreen(const Eigen::Vector3d& p, double margin) const;
-  // Whether p is beyond the near plane (its depth can be drawn).
-  bool inFront(const Eigen::Vector3d& p) const;
-  // (x, y) window position; valid when p is in front of the eye.
-  Eigen::Vector2d project(const Eigen::Vector3d& p) const;
-  // Whether any part of the box can be on screen (conservative: its projected corners'
-  // extent against the image, widened by `margin` pixels; boxes reaching behind the eye
-  // count as on screen).
-  bool boxOnScreen(const Eigen::AlignedBox3d& box, double margin) const;
-};
 
 // Projected chord error of triangles [first, first + count) of `mesh` against `quadric`:
 // per sample (the barycentric grid of measureChordError), the window distance in pixels

@@ -14,7 +14,7 @@ namespace qacc {
 
 // Changes whenever the reference's output for a scene can change: part of the key of the
 // reference render cache (tools/engines/reference_cache.h).
-constexpr const char* kReferenceRendererVersion = "qacc-reference/3";  // 2: screen boxes by piece_extent.h; 3: clip planes scaled by powers of two (unit_plane.h)
+constexpr const char* kReferenceRendererVersion = "qacc-reference/4";  // 2: screen boxes by piece_extent.h; 3: clip planes scaled by powers of two (unit_plane.h); 4: scenes held relative to an origin near their view (scene_origin.h)
 
 struct ReferenceStats {
   double setup_ms = 0;      // window-space setup and binning

@@ -142,3 +142,34 @@ TEST(PrimitiveBounds, UnboundedOnlyWhenThePieceIs) {
   e.clip = {HalfSpace(Eigen::Vector4d(-1, 0, 0, 2))};  // x >= 2
   EXPECT_TRUE(primitiveBounds(e).empty);
 }
+
+// Unclipped ellipsoids take a closed form (an atom, a sphere of a large scene): it must agree
+// with the general path (the same ellipsoid behind a plane that cuts nothing), contain every
+// sampled point, and call an ellipsoid with no real point empty.
+TEST(PrimitiveBounds, UnclippedEllipsoidsInClosedFormAgreeWithTheGeneralPath) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1), s(0.2, 3);
+  for (int i = 0; i < 200; ++i) {
+    Primitive p = makeEllipsoid({0, 0, 0}, {s(rng), s(rng), s(rng)});
+    p.solid = i % 2 == 1;
+    Eigen::Affine3d T = Eigen::Affine3d::Identity();
+    T.translate(Eigen::Vector3d(50 * u(rng), 50 * u(rng), 50 * u(rng)));
+    T.rotate(Eigen::AngleAxisd(M_PI * u(rng), Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized()));
+    p = p.transformed(T.matrix());
+    if (i % 3 == 0) p.quadric.Q = -p.quadric.Q;  // the same surface, the solid's outside
+    Primitive general = p;
+    general.clip.push_back(HalfSpace(Eigen::Vector4d(1, 0, 0, -1e4)));  // x <= 1e4: cuts nothing
+    const PrimitiveBounds a = primitiveBounds(p), b = primitiveBounds(general);
+    ASSERT_EQ(a.bounded, b.bounded) << i;
+    ASSERT_EQ(a.empty, b.empty) << i;
+    if (!a.bounded) continue;
+    const double tol = 1e-7 * (1 + b.box.sizes().norm());
+    EXPECT_LT((a.box.min() - b.box.min()).cwiseAbs().maxCoeff(), tol) << i;
+    EXPECT_LT((a.box.max() - b.box.max()).cwiseAbs().maxCoeff(), tol) << i;
+    const Eigen::AlignedBox3d sampled = sampledExtent(p, b.box, 40);
+    EXPECT_TRUE(a.box.contains(sampled)) << i;
+  }
+  Primitive none = makeEllipsoid({0, 0, 0}, {1, 1, 1});
+  none.quadric.Q(3, 3) = 1;  // x² + y² + z² + 1 = 0
+  EXPECT_TRUE(primitiveBounds(none).empty);
+}

@@ -210,3 +210,14 @@ TEST(Reliability, LoadingIsLinearInTheObjects) {
   std::printf("load: 50 k spheres %.3f s, 200 k spheres %.3f s (ratio %.2f)\n", ts, tl, tl / ts);
   EXPECT_LT(tl, 8.0 * ts);
 }
+
+// A B-spline height field of 64 x 64 squares with G1 knot clouds (the largest grid the type
+// takes) ran for minutes: every knot segment was tested against every cell of the whole
+// field. Each triangle is now split by the segments near it only (simplex_spline2.cpp), with
+// the same cells in the same order; the build takes seconds.
+TEST(Reliability, LargestBsplineHeightFieldBuilds) {
+  const Scene s = parseScene(sceneWith(R"({"type": "bspline", "degree": 2, "grid": {"min": [-3, -3], "max": [3, 3], "n": 64},
+      "continuity": "G1", "knot_radius": 0.2, "height": "0.35 (x^2 + y^2) - 0.025 (x^4 + y^4) + 0.2 x y",
+      "domain": [[-2, -2], [2, 2]]})"), "s.json", ".", Limits{}, ViewCulling{false, 0, 0});
+  EXPECT_GT(s.primitives.size(), 190000u);
+}

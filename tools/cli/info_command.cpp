@@ -1,4 +1,5 @@
 // qacc info SCENE: objects, primitives, quadric types, clip-plane counts, bounds.
+#include <chrono>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -64,7 +65,9 @@ void addInfoCommand(CLI::App& app) {
   addLimitOptions(cmd, *limits);
   addViewCullOption(cmd, *viewCull);
   cmd->callback([path, perPrimitive, limits, viewCull] {
+    const auto loadStart = std::chrono::steady_clock::now();
     const Scene s = loadScene(*path, *limits, ViewCulling{*viewCull, 0, 0});
+    const double loadSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loadStart).count();
     std::printf("scene %s (%s)\n", s.name.c_str(), path->c_str());
     std::printf("image %dx%d, %s camera, %zu lights, %zu materials\n", s.width, s.height,
                 s.camera.type == Camera::Type::Perspective ? "perspective" : "orthographic", s.lights.size(),
@@ -72,6 +75,8 @@ void addInfoCommand(CLI::App& app) {
     std::map<std::string, int> objTypes;
     for (const auto& o : s.objects) objTypes[o.type]++;
     std::printf("objects: %zu\n", s.objects.size());
+    std::printf("loaded in %.3f s (read, parse, build, view culling; %s)\n", loadSeconds,
+                "wall clock, on this machine as loaded now");
     for (const auto& [t, n] : objTypes) std::printf("  %-24s %d\n", t.c_str(), n);
     for (std::size_t i = 0; i < s.objects.size(); ++i)
       if (!s.objects[i].note.empty())
@@ -87,7 +92,8 @@ void addInfoCommand(CLI::App& app) {
       qTypes[quadricTypeName(quadricType(p.quadric))]++;
       clipCounts[p.clip.size()]++;
       solid += p.solid ? 1 : 0;
-      const PrimitiveBounds b = primitiveBounds(p);
+      PrimitiveBounds b = primitiveBounds(p);
+      if (b.bounded && !b.empty) b.box.translate(s.origin);  // world coordinates (scene_origin.h)
       if (*perPrimitive) {
         std::printf("%9zu  %6d  %-28s  %6zu  %5s  ", i, p.object, quadricTypeName(quadricType(p.quadric)),
                     p.clip.size(), p.solid ? "yes" : "no");
@@ -114,6 +120,9 @@ void addInfoCommand(CLI::App& app) {
       std::printf("bounds: [%.4g, %.4g, %.4g] - [%.4g, %.4g, %.4g]%s\n", bounds.min().x(), bounds.min().y(),
                   bounds.min().z(), bounds.max().x(), bounds.max().y(), bounds.max().z(),
                   unbounded ? " (bounded primitives only)" : "");
+    if (!s.origin.isZero())
+      std::printf("scene frame: origin at [%.17g, %.17g, %.17g] (coordinates held relative to it, far from the world origin)\n",
+                  s.origin.x(), s.origin.y(), s.origin.z());
     if (unbounded) std::printf("unbounded primitives: %d (their clipped piece is unbounded)\n", unbounded);
     if (empty) std::printf("empty primitives: %d (their clipped piece is empty)\n", empty);
     {
