@@ -21,7 +21,12 @@
 
 namespace qacc {
 
-constexpr int kCsgEndTolerance = 4;  // depth LSBs
+// Depth LSBs (2^-28 each at the default format): 16 is one LSB of a 24-bit Z-buffer. With
+// 4, a turned notched cube whose shared faces reach a pixel's line through different
+// arithmetic (a slab quadric's root, a clip plane) kept a sliver of the cube at 4 pixels
+// near the notch's corner (CsgEngine.CoincidentFacesLeaveNoSpecklesInHw); 8 was the
+// smallest that cleared it; 4096 merged real events (pinholes).
+constexpr int kCsgEndTolerance = 16;
 
 // The window-space leaves and the per-pixel trees of a scene's csg objects (not movable:
 // the trees point at `win`). Refuses (SceneError, file and JSON path of the csg object) a

@@ -433,7 +433,8 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
   if (!scene.csg_trees.empty()) {
 #ifdef QACC_HAVE_OPENCSG
     if (!loadGlewForOpenCsg()) throw std::runtime_error("OSMesa: a GL function OpenCSG needs is missing");
-    csg = std::make_unique<FacetCsgDraw>(scene, mesh);
+    csg = std::make_unique<FacetCsgDraw>(scene, mesh, options.csg_box_pruning);
+    res.csg_pruning = csg->pruning().line();
 #else
     throw std::invalid_argument(facetCsgMissingMessage());
 #endif

@@ -28,6 +28,9 @@ namespace qacc {
 struct FacetRenderOptions {
   FacetShading shading = FacetShading::Gouraud;
   int threads = 0;  // llvmpipe threads (LP_NUM_THREADS, set before the first context); <= 0: Mesa's default
+  // csg objects: prune the normal form's products by the leaves' boxes and give OpenCSG
+  // the boxes (facet_csg_draw.h). Off only to check that the pruning changes no pixel.
+  bool csg_box_pruning = true;
 };
 
 struct FacetRenderResult {
@@ -37,6 +40,7 @@ struct FacetRenderResult {
   std::string glsl_version; // GL_SHADING_LANGUAGE_VERSION ("" when none)
   FacetShading shading_used = FacetShading::Gouraud;
   std::string note;         // e.g. why per-pixel shading fell back to Gouraud
+  std::string csg_pruning;  // scenes with csg objects: what the box pruning did (FacetCsgPruning::line)
   std::size_t triangles = 0;
   // Host times, each apart, so the draw can be compared alone:
   double context_ms = 0;    // OSMesa context and buffers created and made current

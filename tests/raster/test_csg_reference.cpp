@@ -7,6 +7,7 @@
 
 #include "modeling/loader/scene_loader.h"
 #include "raster/reference/reference_renderer.h"
+#include "tests/raster/notched_cube_scene.h"
 
 using namespace qacc;
 
@@ -162,27 +163,9 @@ TEST(CsgReference, CoincidentFacesLeaveNoSpeckles) {
   // pixel lines through different arithmetic (quadric roots, clip planes): no pixel may
   // show another primitive than its four neighbours when those agree (a speckle).
   for (const char* angles : {"[20, 35, 10]", "[-30, 15, 50]", "[45, 45, 0]"}) {
-    const std::string scene = R"({"format": "qacc-scene/1", "image": {"width": 240, "height": 240},
-      "camera": {"eye": [2.5, 3.1, 3.7], "target": [0, 0, 0], "fov_y_deg": 45, "near": 0.5, "far": 20},
-      "objects": [{"type": "csg", "op": "difference", "transform": {"rotate_deg": )" + std::string(angles) + R"(},
-        "children": [
-          {"type": "csg", "op": "intersection", "children": [
-            {"type": "quadric", "matrix": [[1,0,0,0],[0,0,0,0],[0,0,0,0],[0,0,0,-1]], "solid": true},
-            {"type": "quadric", "matrix": [[0,0,0,0],[0,1,0,0],[0,0,0,0],[0,0,0,-1]], "solid": true},
-            {"type": "quadric", "matrix": [[0,0,0,0],[0,0,0,0],[0,0,1,0],[0,0,0,-1]], "solid": true}]},
-          {"type": "plane", "point": [0, 0, 1], "normal": [0, 0, 1], "solid": true,
-           "clip": [[1,0,0,-1],[-1,0,0,0],[0,1,0,-1],[0,-1,0,0],[0,0,-1,0]]}]}]})";
-    const Scene s = parseScene(scene, "t.json", ".");
+    const Scene s = parseScene(notchedCubeScene(angles), "t.json", ".");
     const FrameBuffer fb = renderReference(s, 2);
-    const int N = 240;
-    int speckles = 0;
-    for (int y = 1; y + 1 < N; ++y)
-      for (int x = 1; x + 1 < N; ++x) {
-        auto at = [&](int u, int v) { return fb.primitive[std::size_t(v) * N + std::size_t(u)]; };
-        const int n = at(x - 1, y);
-        if (at(x + 1, y) == n && at(x, y - 1) == n && at(x, y + 1) == n && at(x, y) != n) ++speckles;
-      }
-    EXPECT_EQ(speckles, 0) << angles;
+    EXPECT_EQ(countSpeckles(fb), 0) << angles;
     EXPECT_GT(fb.covered(), 5000u);
   }
 }

@@ -87,6 +87,7 @@ bool runFacetEngine(const std::string& engine, const Scene& scene, const EngineO
   out.notes.push_back("facets: shading " + std::string(facetShadingName(run.render.shading_used)) + ", GL_RENDERER " +
                       run.render.gl_renderer + ", GL_VERSION " + run.render.gl_version);
   if (!run.render.note.empty()) out.notes.push_back("facets: " + run.render.note);
+  if (!run.render.csg_pruning.empty()) out.notes.push_back("facets: " + run.render.csg_pruning);
   return true;
 }
 
