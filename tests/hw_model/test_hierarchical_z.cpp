@@ -122,6 +122,10 @@ TEST(HierarchicalZ, ConfigurationKeysAreStrict) {
   EXPECT_EQ(back.hiz_tile_size, 8);
   for (const char* n : {"default", "minimal", "wide"})
     EXPECT_FALSE(loadHwConfig(std::string(QACC_SOURCE_DIR) + "/hw_model/configs/" + n + ".json").hierarchical_z) << n;
+  const HwConfig shipped = loadHwConfig(std::string(QACC_SOURCE_DIR) + "/hw_model/configs/default_hiz.json");
+  EXPECT_TRUE(shipped.hierarchical_z);
+  EXPECT_EQ(shipped.hiz_tile_size, 8);
+  EXPECT_EQ(shipped.name, "default_hiz");
 }
 
 TEST(HierarchicalZ, TileBoundIsConservativeUnderRandomWrites) {
