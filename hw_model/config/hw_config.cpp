@@ -46,6 +46,14 @@ Field choiceField(E HwConfig::*m, const char* first, E a, const char* second, E 
           [=](const HwConfig& c) { return nlohmann::json(c.*m == a ? first : second); }};
 }
 
+Field boolField(bool HwConfig::*m) {
+  return {[m](HwConfig& c, const nlohmann::json& j, const std::string& where) {
+            if (!j.is_boolean()) throw std::invalid_argument(where + ": expected true or false");
+            c.*m = j.get<bool>();
+          },
+          [m](const HwConfig& c) { return nlohmann::json(c.*m); }};
+}
+
 const std::map<std::string, Field>& fields() {
   static const std::map<std::string, Field> f = [] {
     std::map<std::string, Field> m;
@@ -113,6 +121,9 @@ const std::map<std::string, Field>& fields() {
     m["csg_list_depth"] = intField(&HwConfig::csg_list_depth, 1, 1024);
     m["csg_leaf_bits"] = intField(&HwConfig::csg_leaf_bits, 1, 24);
     m["csg_tag_bits"] = intField(&HwConfig::csg_tag_bits, 2, 8);
+    m["hierarchical_z"] = boolField(&HwConfig::hierarchical_z);
+    m["hiz_tile_size"] = intField(&HwConfig::hiz_tile_size, 4, 32);
+    m["hiz_depth_bits"] = intField(&HwConfig::hiz_depth_bits, 4, 31);
     return m;
   }();
   return f;
@@ -152,6 +163,9 @@ void checkHwConfig(const HwConfig& c, const std::string& file) {
   };
   if (c.sqrt_radix == 3) fail("sqrt_radix", "radix must be 2 or 4");
   if (c.divider_radix == 3) fail("divider_radix", "radix must be 2 or 4");
+  if (c.hiz_tile_size & (c.hiz_tile_size - 1))
+    fail("hiz_tile_size", std::to_string(c.hiz_tile_size) + " is not a power of two: the tiles must divide the 32x32 "
+                          "traversal tiles (4, 8, 16 or 32)");
   if (c.depth_frac_bits + 2 > c.depth_bits)
     fail("depth_bits", std::to_string(c.depth_bits) + " must exceed depth_frac_bits (" +
                            std::to_string(c.depth_frac_bits) + ") by at least 2: a sign bit and the integer bit of z = 1");

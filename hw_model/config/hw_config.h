@@ -63,6 +63,13 @@ struct HwConfig {
   int csg_list_depth = 32;       // intervals per pixel list (the shipped scenes need up to 32)
   int csg_leaf_bits = 11;        // leaf index of a list entry: up to 2^11 leaves per csg object
   int csg_tag_bits = 4;          // end tag: surface, near/far, or one of 2^4 - 2 clip planes
+  // Hierarchical Z (coarse occlusion culling, datapath/hierarchical_z_memory.h, off as on the
+  // boards of the 1990s): per screen tile of hiz_tile_size² pixels a conservative maximum
+  // stored depth, held in hiz_depth_bits (at most zbuffer_bits); a block of a span whose
+  // primitive's depth floor is not nearer than it is rejected before the pixel pipelines.
+  bool hierarchical_z = false;
+  int hiz_tile_size = 8;         // 4, 8, 16 or 32 (a divisor of the 32x32 traversal tiles)
+  int hiz_depth_bits = 12;       // the tile maxima, rounded up (conservative)
 };
 
 // The configuration file format: strict JSON (modeling/scene/strict_json.h: syntax errors

@@ -11,6 +11,9 @@ namespace qacc {
 struct OverflowCounters {
   OverflowCounter setup, interpolator, sqrt, depth, clip, shading;
   std::uint64_t depth_clamps = 0;
+  // Visible depths raised to the primitive's depth floor (PrimitiveSetup::zFloor): the
+  // datapath returned a depth nearer than the piece's exact minimum less the margin.
+  std::uint64_t depth_floor_clamps = 0;
   void add(const OverflowCounters& o) {
     OverflowCounter* mine[] = {&setup, &interpolator, &sqrt, &depth, &clip, &shading};
     const OverflowCounter* theirs[] = {&o.setup, &o.interpolator, &o.sqrt, &o.depth, &o.clip, &o.shading};
@@ -20,6 +23,7 @@ struct OverflowCounters {
       mine[i]->coarse += theirs[i]->coarse;
     }
     depth_clamps += o.depth_clamps;
+    depth_floor_clamps += o.depth_floor_clamps;
   }
   std::uint64_t total() const {
     return setup.events + interpolator.events + sqrt.events + depth.events + clip.events + shading.events;

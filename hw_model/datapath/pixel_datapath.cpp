@@ -53,6 +53,17 @@ void PixelDatapath::stepRight() {
 }
 
 PixelOutcome PixelDatapath::evaluate(OverflowCounters& ovf) {
+  PixelOutcome o = evaluateUnfloored(ovf);
+  // The depth floor (PrimitiveSetup::zFloor): one comparator and a multiplexer after the
+  // depth unit, so that the floor bounds every depth of the primitive (hierarchical Z).
+  if (o.hit && o.z < s_.zFloor) {
+    ++ovf.depth_floor_clamps;
+    o.z = s_.zFloor;
+  }
+  return o;
+}
+
+PixelOutcome PixelDatapath::evaluateUnfloored(OverflowCounters& ovf) {
   PixelOutcome o;
   const int Fz = cfg_.depth_frac_bits, Fi = cfg_.interp_frac_bits;
   const i128 one = i128(1) << Fz;

@@ -41,7 +41,9 @@ class PixelDatapath {
   PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg);
   void startSpan(int u, int v);
   void stepRight();
-  PixelOutcome evaluate(OverflowCounters& ovf);  // at the current position
+  // At the current position; a visible depth is never below the primitive's depth floor
+  // (PrimitiveSetup::zFloor): one nearer is raised to it and counted (depth_floor_clamps).
+  PixelOutcome evaluate(OverflowCounters& ovf);
   // For a solid quadric (not a facet): {f <= 0} ∩ clip polyhedron ∩ [0, 1] at the current
   // position as up to 2 intervals of positive length, ascending — what a CSG method needs
   // of each operand; the fixed-point form of raster/pixel/solid_intervals.h, from the same
@@ -49,6 +51,7 @@ class PixelDatapath {
   int solidIntervals(OverflowCounters& ovf, FixedDepthInterval out[2]);
 
  private:
+  PixelOutcome evaluateUnfloored(OverflowCounters& ovf);
   const PrimitiveSetup& s_;
   const HwConfig& cfg_;
   QuadraticInterpolator delta_, c_;

@@ -44,6 +44,14 @@ struct PrimitiveSetup {
   // host interface, before the rest of setup; it costs the box test's operations only.
   bool culled = false;
   bool facet = false;    // flat-facet path (plane + edges, no square root)
+  // The depth floor (depth format, >= 0): the depth unit never returns a visible depth below
+  // it (PixelDatapath::evaluate clamps, counted in OverflowCounters::depth_floor_clamps), so it
+  // is a true lower bound of every depth the datapath produces for this primitive, the bound the
+  // hierarchical Z unit compares (datapath/hierarchical_z_memory.h). It is the exact minimum
+  // window depth of the clipped piece (raster/pixel/window_primitive.h, pieceDepthRange) less a
+  // margin for the datapath's rounding (setup_arithmetic.cpp, depthFloor), so the clamp never
+  // acts where the datapath is accurate: it only moves a depth that fell below the piece itself.
+  i128 zFloor = 0;
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // screen box [x0, x1) x [y0, y1); local origin (x0, y0)
   // Traversal: the contour conic in local coordinates (unquantised; spans are widened).
   double tA = 0, tB = 0, tC = 0, tD = 0, tE = 0, tF = 0;  // A u² + B uv + C v² + D u + E v + F

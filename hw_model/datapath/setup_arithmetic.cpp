@@ -81,6 +81,22 @@ VectorSetup constantVector(const Eigen::Vector3d& d, const HwConfig& cfg, Overfl
 
 int floorDiv2(int v) { return v >= 0 ? v / 2 : -((-v + 1) / 2); }
 
+// The depth floor of a piece whose exact window depth range is r (PrimitiveSetup::zFloor):
+// r.lo less a margin, in the depth format, rounded down, at least 0 (a visible depth is never
+// negative). The margin covers the datapath's rounding, so that the floor clamp leaves
+// every depth the datapath computes within the piece untouched:
+// kFloorMarginZbufferLsb steps of the stored Z plus kFloorMarginOfRange of the piece's depth range.
+constexpr double kFloorMarginZbufferLsb = 16;
+constexpr double kFloorMarginOfRange = 1.0 / 256;
+i128 depthFloor(const DepthRange& r, const HwConfig& cfg) {
+  if (!(r.lo <= r.hi)) return 0;
+  const double margin =
+      kFloorMarginZbufferLsb * std::ldexp(1.0, -cfg.zbuffer_bits) + kFloorMarginOfRange * (r.hi - r.lo);
+  const double z = r.lo - margin;
+  if (!(z > 0)) return 0;
+  return i128(std::floor(std::ldexp(z, cfg.depth_frac_bits)));
+}
+
 }  // namespace
 
 int setupOperationCount(int planes, int pointLights, bool facet) {
@@ -98,6 +114,15 @@ int setupOperationCount(int planes, int pointLights, bool facet) {
             12 * pointLights;
   ops += facet ? 12 + 3 : 18 + 30 + 8 + 12 + 3 + 6;
   return ops;
+}
+
+int depthFloorOperationCount(int planes, bool facet) {
+  // The z extent of the piece, the exact box's candidates along a third axis: the surface
+  // points where ∇f ∥ z (one line cut with the quadric, 10; not for a facet), each face's
+  // conic (5 per plane) and each edge (5 per pair of planes); the margin and the
+  // quantisation of the floor (2).
+  const int pairs = planes * (planes - 1) / 2;
+  return (facet ? 0 : 10) + 5 * planes + 5 * pairs + 2;
 }
 
 int boxTestOperationCount(int planes, bool facet) {
@@ -123,11 +148,16 @@ PrimitiveSetup setupPrimitive(const Scene& scene, int index, const Eigen::Matrix
   s.boxTestOps = boxTestOperationCount(int(prim.clip.size()), s.facet);
   s.descriptorWords = 10 + 4 * int(prim.clip.size()) + 2;
 
+  // The depth floor is computed by the setup of a machine with the hierarchical Z unit
+  // (its operations are charged there) and, for identical images, by the emulator always.
+  if (cfg.hierarchical_z) s.setupOps += depthFloorOperationCount(int(prim.clip.size()), s.facet);
+
   const WindowPrimitive w = toWindow(prim, index, Minv, scene.width, scene.height);
   if (w.box.empty()) {
     s.culled = true;
     return s;
   }
+  s.zFloor = depthFloor(pieceDepthRange(prim, w, Minv, scene.width, scene.height), cfg);
   s.x0 = w.box.x0;
   s.y0 = w.box.y0;
   s.x1 = w.box.x1;

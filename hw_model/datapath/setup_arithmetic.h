@@ -24,5 +24,8 @@ int setupOperationCount(int planes, int pointLights, bool facet);
 // The first multiply-adds of that count: the window transform of the quadric and its planes
 // and the exact screen box, all a culled primitive (PrimitiveSetup::culled) costs.
 int boxTestOperationCount(int planes, bool facet);
+// The multiply-adds of the depth floor (PrimitiveSetup::zFloor), the z extent of the piece,
+// added to the setup of a machine with the hierarchical Z unit.
+int depthFloorOperationCount(int planes, bool facet);
 
 }  // namespace qacc

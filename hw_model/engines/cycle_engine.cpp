@@ -15,6 +15,7 @@
 #include "hw_model/engines/machine_run.h"
 #include "hw_model/engines/pixel_trace.h"
 #include "hw_model/timing/channel_registry.h"
+#include "hw_model/timing/hierarchical_z_unit.h"
 #include "hw_model/timing/host_interface_unit.h"
 #include "hw_model/timing/pixel_pipeline_unit.h"
 #include "hw_model/timing/setup_unit.h"
@@ -73,19 +74,31 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   }
   ZBufferMemory zb(scene.width, scene.height);
 
+  // The optional hierarchical Z unit: looked up by traversal, told of writes by the Z unit.
+  std::unique_ptr<HierarchicalZUnit> hiz;
+  std::vector<std::uint32_t> storedFloors;
+  if (cfg.hierarchical_z) {
+    hiz = std::make_unique<HierarchicalZUnit>(HierarchicalZUnit::Params::from(cfg), cfg, scene.width, scene.height);
+    storedFloors.reserve(timedSetups.size());
+    for (const PrimitiveSetup& s : timedSetups) storedFloors.push_back(ZBufferMemory::storedValue(s.zFloor, cfg));
+  }
+  HierarchicalZUnit* hizUnit = hiz.get();
+
   std::vector<std::unique_ptr<Unit>> units;
   units.push_back(std::make_unique<HostInterfaceUnit>(HostInterfaceUnit::Params::from(cfg), timedSetups, hostToSetup));
   auto setupUnit = std::make_unique<SetupUnit>(SetupUnit::Params::from(cfg), timedSetups, hostToSetup, setupToTraversal);
   const SetupUnit& setup = *setupUnit;
   units.push_back(std::move(setupUnit));
   units.push_back(std::make_unique<TraversalUnit>(TraversalUnit::Params::from(cfg), timedSetups, trace, setupToTraversal,
-                                                  toPipeline));
+                                                  toPipeline, hizUnit, std::move(storedFloors)));
   const PixelPipelineUnit::Params pipeParams = PixelPipelineUnit::Params::from(cfg);
   for (std::size_t p = 0; p < P; ++p)
     units.push_back(std::make_unique<PixelPipelineUnit>("pixel_pipeline_" + std::to_string(p), pipeParams, wires,
                                                         trace, *toPipeline[p], *toZ[p], st.pixels, &zb));
-  units.push_back(
-      std::make_unique<ZBufferUnit>(ZBufferUnit::Params::from(cfg), cfg, wires, zb, toZ, toShading, st.pixels));
+  auto zunit = std::make_unique<ZBufferUnit>(ZBufferUnit::Params::from(cfg), cfg, wires, zb, toZ, toShading, st.pixels);
+  zunit->reportWritesTo(hizUnit);
+  units.push_back(std::move(zunit));
+  if (hiz) units.push_back(std::move(hiz));  // ticks after traversal (its lookups count as busy)
   std::vector<const ShadingUnit*> shading;
   for (std::size_t p = 0; p < P; ++p) {
     auto u = std::make_unique<ShadingUnit>("shading_" + std::to_string(p), ShadingUnit::Params::from(cfg), wires,
@@ -99,6 +112,10 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   st.cycles = wires.now();
   st.loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0).count();
   for (auto& u : units) st.units.push_back(u->stats());
+  if (hizUnit) {
+    st.hiz = hizUnit->counters;
+    st.hiz.enabled = true;
+  }
   std::uint64_t delivered = 0;
   for (const ShadingUnit* u : shading) delivered += u->delivered();
   if (delivered != st.pixels.written)

@@ -3,8 +3,11 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <optional>
 
+#include "hw_model/datapath/hierarchical_z_memory.h"
 #include "hw_model/datapath/pixel_datapath.h"
 #include "hw_model/datapath/span_solver.h"
 #include "hw_model/datapath/zbuffer_memory.h"
@@ -58,6 +61,15 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   std::vector<PixelCounters> pc(static_cast<std::size_t>(ntiles));
   std::vector<OverflowCounters> oc(static_cast<std::size_t>(ntiles));
   std::vector<CsgCounters> cc(static_cast<std::size_t>(ntiles));
+  // The hierarchical Z unit (datapath/hierarchical_z_memory.h): a tile memory per traversal
+  // tile, each primitive's stored depth floor, and whether a block of a primitive was looked
+  // up / accepted in any tile (for the primitives rejected whole).
+  const bool useHiz = cfg.hierarchical_z;
+  std::vector<HierarchicalZCounters> hc(useHiz ? std::size_t(ntiles) : 0);
+  std::vector<std::uint32_t> storedFloors;
+  std::vector<std::atomic<std::uint8_t>> hizSeen(useHiz ? fs.setups.size() : 0);
+  if (useHiz)
+    for (const PrimitiveSetup& s : fs.setups) storedFloors.push_back(ZBufferMemory::storedValue(s.zFloor, cfg));
   std::uint64_t distinct = 0;
 #pragma omp parallel num_threads(nt) reduction(+ : distinct)
   {
@@ -72,6 +84,8 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
       fb.clearRect(tx0, ty0, tx1, ty1, background);
       if (bin.empty()) continue;
       zb.clear();
+      std::optional<HierarchicalZMemory> hiz;
+      if (useHiz) hiz.emplace(cfg, tx0, ty0, tx1 - tx0, ty1 - ty0);
       for (int k : bin) {
         if (k < 0) {
           const CsgTarget target{zb, tx0, ty0, kTile};
@@ -80,30 +94,60 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
         }
         const PrimitiveSetup& s = fs.setups[std::size_t(k)];
         PixelDatapath pp(s, cfg);
+        // The pixels [xa, xb) of row y, through the pipelines and the Z test.
+        const auto draw = [&](int y, int xa, int xb) {
+          pp.startSpan(xa - s.x0, y - s.y0);
+          for (int x = xa; x < xb; ++x) {
+            ++px.tested;
+            const PixelOutcome o = pp.evaluate(ovf);
+            pp.stepRight();
+            px.clip_passes += std::uint64_t(o.clipPasses);
+            if (!o.hit) {
+              px.clipped += o.candidate;
+              continue;
+            }
+            ++px.covered;
+            px.caps += o.cap >= 0;
+            const std::size_t pix = std::size_t(y - ty0) * kTile + std::size_t(x - tx0);
+            const std::uint32_t stored = ZBufferMemory::storedValue(o.z, cfg);
+            if (zb.testAndWrite(pix, stored, k, o.z, o.cap)) {
+              ++px.written;
+              if (hiz) hiz->write(x, y, stored);
+            } else {
+              ++px.depth_rejected;
+            }
+          }
+        };
+        bool accepted = false, looked = false;
         for (int y = std::max(ty0, s.y0); y < std::min(ty1, s.y1); ++y) {
           Span sp[2];
           const int n = solveSpans(s, y, tx0, tx1, sp);
           for (int i = 0; i < n; ++i) {
-            pp.startSpan(sp[i].x0 - s.x0, y - s.y0);
-            for (int x = sp[i].x0; x < sp[i].x1; ++x) {
-              ++px.tested;
-              const PixelOutcome o = pp.evaluate(ovf);
-              pp.stepRight();
-              px.clip_passes += std::uint64_t(o.clipPasses);
-              if (!o.hit) {
-                px.clipped += o.candidate;
-                continue;
+            if (!hiz) {
+              draw(y, sp[i].x0, sp[i].x1);
+              continue;
+            }
+            // Block by block (a span's pixels in one hierarchical Z tile): a rejected block
+            // would fail the Z test everywhere and is skipped.
+            HierarchicalZCounters& h = hc[std::size_t(t)];
+            const int T = hiz->tileSize();
+            for (int xa = sp[i].x0; xa < sp[i].x1;) {
+              const int xb = std::min(sp[i].x1, (xa / T + 1) * T);
+              ++h.blocks_tested;
+              looked = true;
+              if (hiz->rejects(hiz->tileOf(xa, y), storedFloors[std::size_t(k)])) {
+                ++h.blocks_rejected;
+                h.pixels_rejected += std::uint64_t(xb - xa);
+              } else {
+                accepted = true;
+                draw(y, xa, xb);
               }
-              ++px.covered;
-              px.caps += o.cap >= 0;
-              const std::size_t pix = std::size_t(y - ty0) * kTile + std::size_t(x - tx0);
-              if (zb.testAndWrite(pix, ZBufferMemory::storedValue(o.z, cfg), k, o.z, o.cap))
-                ++px.written;
-              else
-                ++px.depth_rejected;
+              xa = xb;
             }
           }
         }
+        // Bit 1: a block was looked up, bit 2: a block was accepted (in any tile).
+        if (looked) hizSeen[std::size_t(k)].fetch_or(std::uint8_t(1 | (accepted ? 2 : 0)), std::memory_order_relaxed);
       }
       for (int y = ty0; y < ty1; ++y)
         for (int x = tx0; x < tx1; ++x) {
@@ -118,6 +162,15 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
     st.pixels.add(pc[std::size_t(t)]);
     st.overflow.add(oc[std::size_t(t)]);
     st.csg.add(cc[std::size_t(t)]);
+  }
+  if (useHiz) {
+    st.hiz.enabled = true;
+    for (const HierarchicalZCounters& h : hc) st.hiz.add(h);
+    for (const auto& f : hizSeen) {
+      const std::uint8_t v = f.load(std::memory_order_relaxed);
+      st.hiz.primitives_tested += (v & 1) != 0;
+      st.hiz.primitives_rejected += v == 1;
+    }
   }
   st.distinct_written = distinct;
   out.fb = std::move(fb);

@@ -4,8 +4,10 @@
 #include <cmath>
 
 #include "hw_model/datapath/csg_interval_list.h"
+#include "hw_model/datapath/hierarchical_z_memory.h"
 #include "hw_model/datapath/reciprocal_sqrt.h"
 #include "hw_model/report/scene_needs.h"
+#include "hw_model/timing/hierarchical_z_unit.h"
 #include "hw_model/timing/pixel_pipeline_unit.h"
 #include "raster/pixel/tile_binner.h"
 
@@ -115,6 +117,28 @@ CostModel CostModel::of(const HwConfig& c, const SceneNeeds* needs) {
                                                                      : "digit-recurrence sqrt + divider") +
                          "), 3 dot products, colour multipliers, specular table and sRGB ROM, pipeline registers"});
   m.zbufferBitsPerPixel = c.zbuffer_bits;
+
+  // The hierarchical Z unit (datapath/hierarchical_z_memory.h, timing/hierarchical_z_unit.h):
+  // the lookup (tile address adders, the floor register, the comparator of the floor with
+  // the tile's bound), per Z port a tile-record update (layer-bit compare, the max comparator,
+  // the count incrementer and its "tile full" comparator, the record's multiplexers and its
+  // registers for the update latency), and per pixel pipeline the depth floor's comparator and
+  // multiplexer after the depth unit.
+  if (c.hierarchical_z) {
+    const int db = HierarchicalZMemory::depthBits(c), rec = HierarchicalZMemory::bitsPerTile(c);
+    const int countBits = rec - 2 * db - 2;
+    const double lookup = 2 * adder(16) + reg(c.zbuffer_bits) + adder(db + 1);
+    const double update = 2 * adder(db) + 2 * adder(countBits) + mux(rec) +
+                          reg(double(rec) * HierarchicalZUnit::Params::from(c).update_latency);
+    const double floorClamp = adder(c.depth_bits) + mux(c.depth_bits);
+    m.hizGe = lookup + P * (update + floorClamp);
+    m.hizBitsPerTile = rec;
+    m.units.push_back({"hierarchical_z", 1, m.hizGe, 0,
+                       "lookup (tile address, floor comparator), " + std::to_string(P) +
+                           " tile-record update ports, " + std::to_string(P) + " depth-floor clamps; tile memory " +
+                           std::to_string(rec) + " bits per " + std::to_string(c.hiz_tile_size) + "x" +
+                           std::to_string(c.hiz_tile_size) + " tile (SRAM, not in GE)"});
+  }
 
   // The CSG option: per pipeline an insertion port of the list memory and a sweeper.
   const int D = c.csg_list_depth, leafBits = c.csg_leaf_bits;

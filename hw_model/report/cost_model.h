@@ -46,6 +46,11 @@ struct CostModel {
   double csgListBitsPerPixel = 0;  // one pixel's bounded interval list
   double csgListBits = 0;          // the list memory: tile buffers x 32x32 pixels x bits per pixel
   double csgTreeStateBits = 0;     // the sweepers' per-node inside counters
+  // The hierarchical Z unit (HwConfig::hierarchical_z; a unit of `units`, so in the total,
+  // when enabled): its logic, and its tile memory in bits per tile (on chip, SRAM; 0 when
+  // disabled) beside one layer bit per pixel in the Z-buffer record.
+  double hizGe = 0;
+  int hizBitsPerTile = 0;
   // The full configuration, or with `needs` the part of it a scene uses (scene_needs.h): no
   // cap logic without solids, min(K, the scene's largest plane count) clip evaluators, no
   // facet depth interpolator without facets.

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hw_model/datapath/csg_interval_list.h"
+#include "hw_model/datapath/hierarchical_z_memory.h"
 #include "hw_model/report/stats_file.h"
 
 namespace qacc {
@@ -100,6 +101,18 @@ nlohmann::ordered_json toJ(const HwStats& s) {
     for (const auto& [name, c] : d) p[name] = {{"zeroed", c->zeroed}, {"coarse", c->coarse}};
     j["precision_loss"] = p;
   }
+  // Visible depths the datapath returned below the primitive's depth floor (0 where the
+  // floor's margin holds: then the floor changed no pixel; PrimitiveSetup::zFloor).
+  j["depth_floor_clamps"] = s.overflow.depth_floor_clamps;
+  if (s.hiz.enabled)
+    j["hierarchical_z"] = {{"tile_size", s.configuration.hiz_tile_size},
+                           {"depth_bits", HierarchicalZMemory::depthBits(s.configuration)},
+                           {"blocks_tested", s.hiz.blocks_tested},
+                           {"blocks_rejected", s.hiz.blocks_rejected},
+                           {"pixels_rejected", s.hiz.pixels_rejected},
+                           {"primitives_tested", s.hiz.primitives_tested},
+                           {"primitives_rejected", s.hiz.primitives_rejected},
+                           {"issue_cycles_saved", s.hiz.issue_cycles_saved}};
   j["cycles"] = s.cycles;
   j["fast_forwarded_cycles"] = s.fast_forwarded;
   j["clock_mhz"] = s.clock_mhz;
@@ -130,6 +143,14 @@ nlohmann::ordered_json toJ(const HwStats& s) {
                              {"list_memory_bits", s.cost.csgListBits},
                              {"tree_state_bits", s.cost.csgTreeStateBits},
                              {"units", csgCost}};
+  if (s.cost.hizBitsPerTile > 0) {
+    const double tiles = std::ceil(double(s.width) / s.configuration.hiz_tile_size) *
+                         std::ceil(double(s.height) / s.configuration.hiz_tile_size);
+    j["cost"]["hierarchical_z"] = {{"ge", s.cost.hizGe},
+                                   {"tile_memory_bits_per_tile", s.cost.hizBitsPerTile},
+                                   {"tile_memory_bits", tiles * s.cost.hizBitsPerTile},
+                                   {"zbuffer_layer_bits_per_pixel", 1}};
+  }
   if (s.has_needs) {
     nlohmann::ordered_json needed = nlohmann::ordered_json::array();
     for (const UnitCost& u : s.cost_needed.units)
@@ -207,6 +228,19 @@ std::vector<std::string> HwStats::summaryLines() const {
   }
   out.push_back(cost + " kGE; Z-buffer memory off-chip, " + std::to_string(int(this->cost.zbufferBitsPerPixel)) +
                 " bits per pixel");
+  if (hiz.enabled) {
+    out.push_back(hiz.line(configuration.hiz_tile_size));
+    const double tiles = std::ceil(double(width) / configuration.hiz_tile_size) *
+                         std::ceil(double(height) / configuration.hiz_tile_size);
+    std::snprintf(buf, sizeof buf,
+                  "hierarchical Z unit (in the total above): %.1f kGE, tile memory %.0f bits on chip at %dx%d (%d per "
+                  "tile), 1 bit per pixel in the Z-buffer record",
+                  this->cost.hizGe / 1e3, tiles * this->cost.hizBitsPerTile, width, height, this->cost.hizBitsPerTile);
+    out.push_back(buf);
+  }
+  if (overflow.depth_floor_clamps)
+    out.push_back("depth floor: " + std::to_string(overflow.depth_floor_clamps) +
+                  " visible depths were below their primitive's floor and raised to it");
   if (has_needs) {
     std::snprintf(buf, sizeof buf, "silicon the scene needs (%s): %.0f kGE of the %.0f kGE above (pixel pipeline %.1f kGE each)",
                   needs.describe().c_str(), cost_needed.totalGe() / 1e3, this->cost.totalGe() / 1e3,

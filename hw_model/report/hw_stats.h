@@ -7,6 +7,7 @@
 #include "hw_model/report/accuracy_report.h"
 #include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/overflow_counters.h"
+#include "hw_model/report/hierarchical_z_counters.h"
 #include "hw_model/report/cost_model.h"
 #include "hw_model/report/scene_needs.h"
 
@@ -99,6 +100,7 @@ struct HwStats {
   double overdraw() const;  // covered / distinct pixels written
   std::uint64_t distinct_written = 0;  // pixels showing an object at the end
   CsgCounters csg;                     // zero without csg objects
+  HierarchicalZCounters hiz;           // the hierarchical Z unit (enabled: HwConfig::hierarchical_z)
 
   std::string toJson() const;
   std::string toCsv() const;  // one header line + one value line

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "hw_model/timing/hierarchical_z_unit.h"
+
 namespace qacc {
 
 ZBufferUnit::ZBufferUnit(const Params& p, const HwConfig& cfg, ChannelRegistry& wires, ZBufferMemory& zb,
@@ -47,6 +49,7 @@ bool ZBufferUnit::tick(std::uint64_t now) {
     const std::uint32_t stored = ZBufferMemory::storedValue(r.z, cfg_);
     const bool pass = sceneOrderTies_ ? zb_.testAndWriteInSceneOrder(pix, stored, r.prim, r.z, r.cap)
                                       : zb_.testAndWrite(pix, stored, r.prim, r.z, r.cap);
+    if (pass && hiz_) hiz_->noteWrite(now, r.x, r.y, stored);
     if (pass) ++px_.written;
     else ++px_.depth_rejected;
     reads_[p]->accept({pass, r});

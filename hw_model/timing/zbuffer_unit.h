@@ -19,6 +19,8 @@
 
 namespace qacc {
 
+class HierarchicalZUnit;
+
 class ZBufferUnit : public Unit {
  public:
   struct Params {
@@ -39,6 +41,8 @@ class ZBufferUnit : public Unit {
   // Equal stored depths go to the primitive earlier in scene order (ZBufferMemory::
   // testAndWriteInSceneOrder): for primitives drawn after later ones (the CSG pass).
   void tiesInSceneOrder() { sceneOrderTies_ = true; }
+  // Reports every write to the hierarchical Z unit's tile memory (timing/hierarchical_z_unit.h).
+  void reportWritesTo(HierarchicalZUnit* hiz) { hiz_ = hiz; }
 
  private:
   struct InFlight {
@@ -55,6 +59,7 @@ class ZBufferUnit : public Unit {
   std::uint64_t conflicts_ = 0;
   std::size_t rr_ = 0;
   bool sceneOrderTies_ = false;
+  HierarchicalZUnit* hiz_ = nullptr;
 };
 
 }  // namespace qacc

@@ -1,5 +1,6 @@
 #include "raster/pixel/window_primitive.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -97,19 +98,32 @@ ScreenBox pixelBox(const Eigen::AlignedBox3d& ext, int width, int height) {
 
 }  // namespace
 
+// A planar primitive's plane f = p·X (times the weight) in window space.
+static Eigen::Vector4d windowPlane(const Primitive& prim, const Eigen::Matrix4d& Minv) {
+  const Eigen::Vector4d p(2 * prim.quadric.Q(0, 3), 2 * prim.quadric.Q(1, 3), 2 * prim.quadric.Q(2, 3),
+                          prim.quadric.Q(3, 3));
+  return unitPlane(Minv.transpose() * p);
+}
+
+// The vertices of the clip polyhedron ∩ view volume on `plane` (all of them when null).
+static std::vector<Eigen::Vector3d> polytopeVerticesOnPlane(const std::vector<HalfSpace>& clip, int width, int height,
+                                                            const Eigen::Vector4d* plane) {
+  std::vector<Eigen::Vector3d> out;
+  for (const auto& v : polytopeVertices(boundedPolytope(clip, width, height), plane)) {
+    if (plane) {
+      const Eigen::Vector4d& q = *plane;
+      const double mag = std::abs(q[0] * v[0]) + std::abs(q[1] * v[1]) + std::abs(q[2] * v[2]) + std::abs(q[3]);
+      if (!(std::abs(q.dot(v.homogeneous())) <= 1e-9 * mag)) continue;
+    }
+    out.push_back(v);
+  }
+  return out;
+}
+
 static ScreenBox polytopeBoxOnPlane(const std::vector<HalfSpace>& clip, int width, int height,
                              const Eigen::Vector4d* plane) {
-  const std::vector<Eigen::Vector4d> P = boundedPolytope(clip, width, height);
   Eigen::AlignedBox3d ext;
-  for (const auto& v : polytopeVertices(P, plane)) {
-    if (!plane) {
-      ext.extend(v);
-      continue;
-    }
-    const Eigen::Vector4d& q = *plane;
-    const double mag = std::abs(q[0] * v[0]) + std::abs(q[1] * v[1]) + std::abs(q[2] * v[2]) + std::abs(q[3]);
-    if (std::abs(q.dot(v.homogeneous())) <= 1e-9 * mag) ext.extend(v);
-  }
+  for (const auto& v : polytopeVerticesOnPlane(clip, width, height, plane)) ext.extend(v);
   return pixelBox(ext, width, height);
 }
 
@@ -140,6 +154,26 @@ ScreenBox worldBoxToScreen(const Eigen::AlignedBox3d& wb, const Eigen::Matrix4d&
   return box;
 }
 
+DepthRange pieceDepthRange(const Primitive& prim, const WindowPrimitive& w, const Eigen::Matrix4d& Minv, int width,
+                           int height) {
+  DepthRange r;
+  if (prim.isPlanar() && !prim.solid) {
+    const Eigen::Vector4d pw = windowPlane(prim, Minv);
+    for (const auto& v : polytopeVerticesOnPlane(w.clip, width, height, &pw)) {
+      r.lo = std::min(r.lo, v.z());
+      r.hi = std::max(r.hi, v.z());
+    }
+    return r;
+  }
+  const Eigen::Vector3d ref(width / 2.0, height / 2.0, 0.5);
+  const Eigen::AlignedBox3d ext = pieceExtent(w.Q, boundedPolytope(w.clip, width, height), w.solid, ref, 3);
+  if (!ext.isEmpty()) {
+    r.lo = ext.min().z();
+    r.hi = ext.max().z();
+  }
+  return r;
+}
+
 WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& Minv, int width, int height) {
   WindowPrimitive w;
   w.index = index;
@@ -157,10 +191,7 @@ WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d
     w.clip.emplace_back(unitPlane(t.p), t.owns_boundary);
   }
   if (prim.isPlanar() && !prim.solid) {
-    // A plane f = p·X (times the weight) in world space: restrict the polytope to it.
-    const Eigen::Vector4d p(2 * prim.quadric.Q(0, 3), 2 * prim.quadric.Q(1, 3), 2 * prim.quadric.Q(2, 3),
-                            prim.quadric.Q(3, 3));
-    const Eigen::Vector4d pw = unitPlane(Minv.transpose() * p);
+    const Eigen::Vector4d pw = windowPlane(prim, Minv);
     w.box = polytopeBoxOnPlane(w.clip, width, height, &pw);
     return w;
   }

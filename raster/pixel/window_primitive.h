@@ -56,6 +56,15 @@ WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d
 // for solids, the polytope vertices inside f <= 0. Widened by one pixel; empty when nothing
 // of the piece lies in the view volume.
 ScreenBox patchBox(const Eigen::Matrix4d& Q, const std::vector<HalfSpace>& clip, bool solid, int width, int height);
+// The window depth range [lo, hi] of the same set as the screen box (the clipped piece, or
+// the solid's part of the clip polyhedron, or a planar primitive's polygon, inside the view
+// volume), from the same exact candidates (Lagrange, modeling/geometry/piece_extent.h) along
+// z; lo > hi when the set is empty. `w` is toWindow(prim, ...).
+struct DepthRange {
+  double lo = 1, hi = 0;
+};
+DepthRange pieceDepthRange(const Primitive& prim, const WindowPrimitive& w, const Eigen::Matrix4d& Minv, int width,
+                           int height);
 // Pixels whose centres can satisfy Δ >= 0 (exact extent of the conic region, widened by one
 // pixel against rounding), clamped to the screen; the whole screen when the region is unbounded.
 ScreenBox conicBox(const Conic& delta, int width, int height);
