@@ -57,8 +57,9 @@ TEST(Reliability, ManyUnarySignsDoNotOverflowTheStack) {
 
 // A short text whose products expand beyond any use (degree 256, millions of terms) used to
 // run for 18 s and end in bad_alloc; the degree is checked before each product is expanded.
+// Refused by the estimate, before any product is expanded (the messages name the estimate);
+// no wall-clock bound here: speed is measured in benchmarks, and ctest's timeout catches a hang.
 TEST(Reliability, ProductsAreBoundedBeforeExpansion) {
-  const auto t0 = std::chrono::steady_clock::now();
   try {
     Polynomial3::parse("(x+y+z+1)^64(x+y+z+1)^64(x+y+z+1)^64(x+y+z+1)^64");
     FAIL() << "accepted";
@@ -71,7 +72,6 @@ TEST(Reliability, ProductsAreBoundedBeforeExpansion) {
   } catch (const PolynomialParseError& e) {
     EXPECT_NE(std::string(e.what()).find("degree exceeds 64"), std::string::npos) << e.what();
   }
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
 }
 
 // A box of 1e20 made the BB-quadric code throw inside an OpenMP loop: the process aborted
