@@ -28,9 +28,19 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg, Over
   }
   std::vector<Material> mats = scene.materials;
   if (mats.empty()) mats.emplace_back();
-  for (const Material& m : mats) {
+  // A material no primitive uses gets no specular ROM (2^unit_frac_bits + 1 powers each):
+  // the host spends nothing on what the scene does not draw.
+  std::vector<char> used(mats.size(), 0);
+  for (const Primitive& p : scene.primitives)
+    if (p.material >= 0 && std::size_t(p.material) < used.size()) used[std::size_t(p.material)] = 1;
+  for (std::size_t mi = 0; mi < mats.size(); ++mi) {
+    const Material& m = mats[mi];
     MaterialQ q;
     for (int k = 0; k < 3; ++k) q.color[k] = quantize(std::clamp(m.color[k], 0.0, 1.0), cf, cf + 2, cfg.overflow, ovf);
+    if (!used[mi]) {
+      L.materials.push_back(std::move(q));
+      continue;
+    }
     const int n = (1 << uf) + 1;
     q.specular.resize(std::size_t(n));
     // Entries saturate at the ROM's 32-bit width, counted as shading overflows (a specular

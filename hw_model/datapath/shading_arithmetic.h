@@ -30,7 +30,9 @@ struct LightingSetup {
   };
   struct MaterialQ {
     i128 color[3] = {0, 0, 0};
-    std::vector<std::int32_t> specular;  // ROM: specular · (i / 2^unit_frac)^shininess, 0.color_frac
+    // ROM: specular · (i / 2^unit_frac)^shininess, 0.color_frac; empty for a material no
+    // primitive uses (never read).
+    std::vector<std::int32_t> specular;
   };
   std::vector<LightQ> lights;
   std::vector<MaterialQ> materials;

@@ -11,8 +11,10 @@
 
 namespace qacc {
 
-CsgFrame::CsgFrame(const Scene& scene, const HwConfig& cfg, int width, int height)
-    : win(scene.primitives.size()), treeOfPrimitive(scene.primitives.size(), -1) {
+CsgFrame::CsgFrame(const Scene& scene, const HwConfig& cfg, int width, int height) {
+  if (scene.csg_trees.empty()) return;
+  win.resize(scene.primitives.size());
+  treeOfPrimitive.assign(scene.primitives.size(), -1);
   const Eigen::Matrix4d Minv = scene.camera.worldToWindow(width, height).inverse();
   trees.reserve(scene.csg_trees.size());
   const long long maxLeaves = 1LL << cfg.csg_leaf_bits;

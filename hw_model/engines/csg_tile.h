@@ -36,9 +36,13 @@ struct CsgFrame {
   CsgFrame(const Scene& scene, const HwConfig& cfg, int width, int height);
   CsgFrame(const CsgFrame&) = delete;
   CsgFrame& operator=(const CsgFrame&) = delete;
+  // The csg object of primitive i, -1 for a primitive outside every csg object.
+  int treeOf(std::size_t i) const { return treeOfPrimitive.empty() ? -1 : treeOfPrimitive[i]; }
+  // Without csg objects the frame holds nothing (no per-primitive window forms or tree
+  // indices are made): a scene pays for the CSG path only when it uses it.
   std::vector<WindowPrimitive> win;
   std::vector<CsgPixelTree> trees;
-  std::vector<int> treeOfPrimitive;  // -1 for primitives outside every csg object
+  std::vector<int> treeOfPrimitive;  // empty without csg objects (treeOf)
 };
 
 // Where drawCsgTile writes: a Z-buffer whose pixel (x, y) is at (y - y0) * width + x - x0,

@@ -44,7 +44,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   if (!csg.trees.empty()) {
     timedCopy.setups = fs.setups;
     for (PrimitiveSetup& s : timedCopy.setups)
-      if (csg.treeOfPrimitive[std::size_t(s.index)] >= 0) s.visible = false;
+      if (csg.treeOf(std::size_t(s.index)) >= 0) s.visible = false;
   }
   const std::vector<PrimitiveSetup>& timedSetups = csg.trees.empty() ? fs.setups : timedCopy.setups;
   // So is the pixel arithmetic (functional-first, timing-directed: pixel_trace.h).

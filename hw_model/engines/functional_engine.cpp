@@ -37,7 +37,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   std::vector<bool> csgAdded(csg.trees.size(), false);
   st.csg.objects = csg.trees.size();
   for (const PrimitiveSetup& s : fs.setups) {
-    const int tree = csg.treeOfPrimitive[std::size_t(s.index)];
+    const int tree = csg.treeOf(std::size_t(s.index));
     if (tree >= 0 && !csgAdded[std::size_t(tree)]) {
       csgAdded[std::size_t(tree)] = true;
       bins.add(-1 - tree, csg.trees[std::size_t(tree)].box());

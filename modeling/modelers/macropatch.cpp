@@ -495,10 +495,16 @@ std::vector<MacropatchCell> buildMacropatchCells(const std::vector<ControlNet>& 
   return out;
 }
 
-std::vector<Primitive> macropatchPrimitives(const std::vector<MacropatchCell>& cells, int material, int object) {
+std::vector<Primitive> macropatchPrimitives(const std::vector<MacropatchCell>& cells, int material, int object,
+                                            const ViewVolume* view, ViewCullCount* count) {
+  ViewCullCount local(view != nullptr);
+  ViewCullCount& seen = count ? *count : local;
   std::vector<Primitive> out;
-  for (const auto& c : cells)
+  for (const auto& c : cells) {
+    // The piece is clipped by the cell's four faces: it lies in the tetrahedron.
+    if (view && !seen.keep(view->mayContain(c.bb.V.data(), c.bb.V.size()))) continue;
     if (!c.bb.isProvablyEmpty()) out.push_back(c.bb.toPrimitive(material, object, false));
+  }
   return out;
 }
 
@@ -608,12 +614,17 @@ std::vector<Primitive> buildMacropatch(const JsonNode& o, ObjectContext& ctx) {
     // The same control nets as quadratic Bézier triangles, tessellated (for comparisons).
     const int n = int(o.has("tessellation") ? o.at("tessellation").integer(1, 256) : 8);
     const BezierMesh mesh = tessellateBezierTriangles(nets, n);
+    ViewCullCount seen(ctx.view != nullptr);
     std::vector<Primitive> tris;
     for (const auto& t : mesh.triangles) {
       const Vector3d &a = mesh.vertices[std::size_t(t[0])], &b = mesh.vertices[std::size_t(t[1])],
                      &c = mesh.vertices[std::size_t(t[2])];
-      if ((b - a).cross(c - a).norm() > 0) tris.push_back(makeTriangle(a, b, c));
+      if (!((b - a).cross(c - a).norm() > 0)) continue;
+      const Vector3d corners[3] = {a, b, c};
+      if (ctx.view && !seen.keep(ctx.view->mayContain(corners, 3))) continue;
+      tris.push_back(makeTriangle(a, b, c));
     }
+    ctx.note = seen.note();
     return tris;
   }
   if (o.has("tessellation")) o.at("tessellation").fail("only the \"bezier\" model is tessellated");
@@ -638,7 +649,10 @@ std::vector<Primitive> buildMacropatch(const JsonNode& o, ObjectContext& ctx) {
       if (o.has(key)) o.at(key).fail("only the G0 model has user-set constants");
   }
   try {
-    return macropatchPrimitives(buildMacropatchCells(nets, opt), ctx.material, 0);
+    ViewCullCount seen(ctx.view != nullptr);
+    std::vector<Primitive> prims = macropatchPrimitives(buildMacropatchCells(nets, opt), ctx.material, 0, ctx.view, &seen);
+    ctx.note = seen.note();
+    return prims;
   } catch (const std::invalid_argument& e) {
     (netsNode ? *netsNode : *surfNode).fail(e.what());
   }

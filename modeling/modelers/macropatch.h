@@ -65,6 +65,7 @@
 
 #include "modeling/modelers/bb_quadric.h"
 #include "modeling/loader/object_registry.h"
+#include "modeling/loader/view_cull_count.h"
 #include "modeling/geometry/primitive.h"
 
 namespace qacc {
@@ -107,9 +108,12 @@ struct MacropatchCell {
 std::vector<MacropatchCell> buildMacropatchCells(const std::vector<ControlNet>& nets,
                                                  const MacropatchOptions& options);
 // Cells as primitives (provably empty cells, whose 10 coefficients share one strict sign,
-// are not emitted); `object` is stored in each primitive.
+// are not emitted); `object` is stored in each primitive. With a `view` (view culling,
+// ObjectContext::view), a cell whose tetrahedron misses it is not turned into a primitive
+// (counted in `count`; the cells themselves are solved together, G1 across nets).
 std::vector<Primitive> macropatchPrimitives(const std::vector<MacropatchCell>& cells, int material = 0,
-                                            int object = 0);
+                                            int object = 0, const ViewVolume* view = nullptr,
+                                            ViewCullCount* count = nullptr);
 
 // Continuity measured over every pair of cells that share a face (exact vertex positions):
 // internal pairs (same net) and macropatch-to-macropatch pairs separately.

@@ -238,13 +238,30 @@ std::vector<std::pair<int, int>> inferBonds(const std::vector<Atom>& atoms) {
 }
 
 std::vector<Primitive> moleculePrimitives(const Molecule& m, const MoleculeDisplay& d,
-                                          const std::function<int(const std::string&)>& material_of) {
+                                          const std::function<int(const std::string&)>& material_of,
+                                          const ViewVolume* view, ViewCullCount* count) {
+  ViewCullCount local(view != nullptr);
+  ViewCullCount& seen = count ? *count : local;
+  // A cylinder of radius r on the segment ab lies in the hull of the cubes of half-side r
+  // around a and b (segment ⊕ ball ⊂ segment ⊕ cube).
+  auto cylinderMayBeSeen = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, double r) {
+    if (!view) return true;
+    std::array<Eigen::Vector3d, 16> hull;
+    for (int k = 0; k < 8; ++k) {
+      const Eigen::Vector3d c(k & 1 ? r : -r, k & 2 ? r : -r, k & 4 ? r : -r);
+      hull[std::size_t(k)] = a + c;
+      hull[std::size_t(k) + 8] = b + c;
+    }
+    return view->mayContain(hull.data(), hull.size());
+  };
   std::vector<Primitive> out;
   std::vector<int> mat(m.atoms.size());
   for (std::size_t i = 0; i < m.atoms.size(); ++i) {
     const Atom& a = m.atoms[i];
     mat[i] = material_of(a.element);
-    Primitive p = makeSphere(a.position, d.atom_scale * vdwRadius(a.element));
+    const double radius = d.atom_scale * vdwRadius(a.element);
+    if (!seen.keep(!view || view->mayContainBall(a.position, radius))) continue;
+    Primitive p = makeSphere(a.position, radius);
     p.material = mat[i];
     out.push_back(p);
   }
@@ -253,17 +270,22 @@ std::vector<Primitive> moleculePrimitives(const Molecule& m, const MoleculeDispl
     const Eigen::Vector3d& a = m.atoms[std::size_t(i)].position;
     const Eigen::Vector3d& b = m.atoms[std::size_t(j)].position;
     if (mat[std::size_t(i)] == mat[std::size_t(j)]) {
+      if (!seen.keep(cylinderMayBeSeen(a, b, d.bond_radius))) continue;
       Primitive p = makeCylinder(a, b, d.bond_radius);
       p.material = mat[std::size_t(i)];
       out.push_back(p);
     } else {
       const Eigen::Vector3d mid = 0.5 * (a + b);
-      Primitive p = makeCylinder(a, mid, d.bond_radius);
-      p.material = mat[std::size_t(i)];
-      out.push_back(p);
-      Primitive q = makeCylinder(mid, b, d.bond_radius);
-      q.material = mat[std::size_t(j)];
-      out.push_back(q);
+      if (seen.keep(cylinderMayBeSeen(a, mid, d.bond_radius))) {
+        Primitive p = makeCylinder(a, mid, d.bond_radius);
+        p.material = mat[std::size_t(i)];
+        out.push_back(p);
+      }
+      if (seen.keep(cylinderMayBeSeen(mid, b, d.bond_radius))) {
+        Primitive q = makeCylinder(mid, b, d.bond_radius);
+        q.material = mat[std::size_t(j)];
+        out.push_back(q);
+      }
     }
   }
   return out;
@@ -326,7 +348,10 @@ std::vector<Primitive> buildPdb(const JsonNode& o, ObjectContext& ctx) {
     ctx.scene.materials.push_back(m);
     return int(ctx.scene.materials.size() - 1);
   };
-  return moleculePrimitives(mol, d, materialOf);
+  ViewCullCount seen(ctx.view != nullptr);
+  std::vector<Primitive> prims = moleculePrimitives(mol, d, materialOf, ctx.view, &seen);
+  ctx.note = seen.note();
+  return prims;
 }
 
 namespace {

@@ -19,6 +19,7 @@
 #include <Eigen/Dense>
 
 #include "modeling/loader/object_registry.h"
+#include "modeling/loader/view_cull_count.h"
 
 namespace qacc {
 
@@ -63,9 +64,13 @@ struct MoleculeDisplay {
 
 // Primitives of a molecule: one sphere per atom, and for ball-and-stick two cylinders per
 // bond, each half in its atom's material (one cylinder when both halves share a material).
-// `material_of(element)` gives the material index of an element.
+// `material_of(element)` gives the material index of an element (asked for every atom,
+// seen or not, so materials do not depend on the view). With a `view` (view culling,
+// ObjectContext::view), an atom whose ball or a bond whose cylinder's box hull misses it is
+// not built (counted in `count`).
 std::vector<Primitive> moleculePrimitives(const Molecule& m, const MoleculeDisplay& d,
-                                          const std::function<int(const std::string&)>& material_of);
+                                          const std::function<int(const std::string&)>& material_of,
+                                          const ViewVolume* view = nullptr, ViewCullCount* count = nullptr);
 
 // Scene builder for "pdb": {"file", "style": "spacefill" | "ball_and_stick",
 // "atom_scale", "bond_radius", "center", "waters"}. Materials "pdb:<element>" are appended

@@ -1,6 +1,7 @@
 #include "modeling/modelers/revolution.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -36,6 +37,29 @@ RevolutionProfile oriented(double A, double C, double Iz, double J) {
 }
 
 std::string pointName(std::size_t i) { return "profile point " + std::to_string(i); }
+
+// The largest r² of a piece on its slab: at an end or at the vertex of r²(z).
+double largestRadiusSquared(const RevolutionPiece& pc) {
+  double hi = std::max(pc.profile.radiusSquared(pc.z0), pc.profile.radiusSquared(pc.z1));
+  if (pc.profile.C != 0) {
+    const double zv = -pc.profile.Iz / (2 * pc.profile.C);
+    if (zv > pc.z0 && zv < pc.z1) hi = std::max(hi, pc.profile.radiusSquared(zv));
+  }
+  return hi;
+}
+
+// The corners of a box that holds the piece (its slab by its largest radius, widened by a
+// relative 1e-9 against rounding), placed by M.
+std::array<Eigen::Vector3d, 8> pieceHull(const RevolutionPiece& pc, const Eigen::Matrix4d& M) {
+  const double r = std::sqrt(std::max(0.0, largestRadiusSquared(pc))) * (1 + 1e-9);
+  const double pad = 1e-9 * std::max(std::fabs(pc.z0), std::fabs(pc.z1));
+  std::array<Eigen::Vector3d, 8> out;
+  for (int k = 0; k < 8; ++k) {
+    const Eigen::Vector4d x(k & 1 ? r : -r, k & 2 ? r : -r, k & 4 ? pc.z1 + pad : pc.z0 - pad, 1.0);
+    out[std::size_t(k)] = (M * x).head<3>();
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -147,7 +171,10 @@ std::vector<RevolutionPiece> revolutionPieces(const std::vector<ProfilePoint>& p
 }
 
 std::vector<Primitive> revolutionPrimitives(const std::vector<ProfilePoint>& profile, RevolutionJoin join,
-                                            const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) {
+                                            const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                                            const ViewVolume* view, ViewCullCount* count) {
+  ViewCullCount local(view != nullptr);
+  ViewCullCount& seen = count ? *count : local;
   if (!(direction.norm() > 0)) throw std::invalid_argument("revolution: zero axis direction");
   const std::vector<RevolutionPiece> pieces = revolutionPieces(profile, join);
   // One plane per slab boundary, keeping the side below it; the piece above uses opposite().
@@ -167,6 +194,10 @@ std::vector<Primitive> revolutionPrimitives(const std::vector<ProfilePoint>& pro
   const Eigen::Matrix4d M = alignZ(origin, direction);
   std::vector<Primitive> out;
   for (const auto& pc : pieces) {
+    if (view) {
+      const std::array<Eigen::Vector3d, 8> hull = pieceHull(pc, M);
+      if (!seen.keep(view->mayContain(hull.data(), hull.size()))) continue;
+    }
     Primitive p;
     p.quadric = pc.profile.quadric();
     p.clip.push_back(planeAt(pc.z0).opposite());  // z >= z0
@@ -176,7 +207,7 @@ std::vector<Primitive> revolutionPrimitives(const std::vector<ProfilePoint>& pro
   return out;
 }
 
-std::vector<Primitive> buildRevolution(const JsonNode& o, ObjectContext&) {
+std::vector<Primitive> buildRevolution(const JsonNode& o, ObjectContext& ctx) {
   const JsonNode prof = o.at("profile");
   std::vector<ProfilePoint> profile;
   for (std::size_t i = 0; i < prof.size(); ++i) {
@@ -197,7 +228,10 @@ std::vector<Primitive> buildRevolution(const JsonNode& o, ObjectContext&) {
     axis->finish();
   }
   try {
-    return revolutionPrimitives(profile, join, origin, direction);
+    ViewCullCount seen(ctx.view != nullptr);
+    std::vector<Primitive> prims = revolutionPrimitives(profile, join, origin, direction, ctx.view, &seen);
+    ctx.note = seen.note();
+    return prims;
   } catch (const std::invalid_argument& e) {
     prof.fail(e.what());
   }

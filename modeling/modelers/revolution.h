@@ -31,6 +31,7 @@
 #include <Eigen/Dense>
 
 #include "modeling/loader/object_registry.h"
+#include "modeling/loader/view_cull_count.h"
 #include "modeling/geometry/primitive.h"
 #include "modeling/geometry/quadric.h"
 
@@ -73,10 +74,13 @@ struct RevolutionPiece {
 std::vector<RevolutionPiece> revolutionPieces(const std::vector<ProfilePoint>& profile, RevolutionJoin join);
 
 // The pieces as primitives about the axis through `origin` along `direction` (local z maps
-// onto it), clipped between consecutive profile planes (shared planes built once).
+// onto it), clipped between consecutive profile planes (shared planes built once). With a
+// `view` (view culling, ObjectContext::view), a piece whose box — its slab by its largest
+// radius about the axis — misses the view is not built (counted in `count`).
 std::vector<Primitive> revolutionPrimitives(const std::vector<ProfilePoint>& profile, RevolutionJoin join,
                                             const Eigen::Vector3d& origin = Eigen::Vector3d::Zero(),
-                                            const Eigen::Vector3d& direction = Eigen::Vector3d::UnitZ());
+                                            const Eigen::Vector3d& direction = Eigen::Vector3d::UnitZ(),
+                                            const ViewVolume* view = nullptr, ViewCullCount* count = nullptr);
 
 // Scene builder for "revolution": {"profile": [[r, z], ...], "join": "G0" | "G1" (default
 // "G0"), "axis": {"origin": [x, y, z], "direction": [x, y, z]} (default the z axis)}.

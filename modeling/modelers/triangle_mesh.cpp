@@ -83,7 +83,10 @@ TriangleMesh readObj(const std::string& path, std::size_t max_bytes) {
   return parseObj(readModelFile(path, max_bytes, "OBJ file"), path);
 }
 
-std::vector<Primitive> meshPrimitives(const TriangleMesh& mesh, std::size_t* skipped) {
+std::vector<Primitive> meshPrimitives(const TriangleMesh& mesh, std::size_t* skipped, const ViewVolume* view,
+                                      ViewCullCount* count) {
+  ViewCullCount local(view != nullptr);
+  ViewCullCount& seen = count ? *count : local;
   std::vector<Primitive> out;
   out.reserve(mesh.triangles.size());
   std::size_t bad = 0;
@@ -95,6 +98,10 @@ std::vector<Primitive> meshPrimitives(const TriangleMesh& mesh, std::size_t* ski
     if (!((b - a).cross(c - a).norm() > 1e-12 * scale)) {
       ++bad;
       continue;
+    }
+    if (view) {
+      const Eigen::Vector3d corners[3] = {a, b, c};
+      if (!seen.keep(view->mayContain(corners, 3))) continue;
     }
     out.push_back(makeTriangle(a, b, c));
   }
@@ -132,7 +139,10 @@ std::vector<Primitive> buildTriangleMesh(const JsonNode& o, ObjectContext& ctx) 
       mesh.triangles.push_back(tri);
     }
   }
-  return meshPrimitives(mesh);
+  ViewCullCount seen(ctx.view != nullptr);
+  std::vector<Primitive> prims = meshPrimitives(mesh, nullptr, ctx.view, &seen);
+  ctx.note = seen.note();
+  return prims;
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "modeling/loader/object_registry.h"
+#include "modeling/loader/view_cull_count.h"
 
 namespace qacc {
 
@@ -26,8 +27,11 @@ TriangleMesh readObj(const std::string& path, std::size_t max_bytes = Limits{}.m
 TriangleMesh parseObj(const std::string& text, const std::string& name);
 
 // One facet primitive per non-degenerate triangle (zero-area triangles draw nothing and
-// are skipped; `skipped`, if given, receives their number).
-std::vector<Primitive> meshPrimitives(const TriangleMesh& mesh, std::size_t* skipped = nullptr);
+// are skipped; `skipped`, if given, receives their number). With a `view` (view culling,
+// ObjectContext::view), a triangle whose three corners lie outside one of its planes is not
+// built (counted in `count`).
+std::vector<Primitive> meshPrimitives(const TriangleMesh& mesh, std::size_t* skipped = nullptr,
+                                      const ViewVolume* view = nullptr, ViewCullCount* count = nullptr);
 
 // Scene builder for "triangle_mesh": {"vertices": [[x,y,z]...], "triangles": [[i,j,k]...]}
 // or {"file": "mesh.obj"}.
