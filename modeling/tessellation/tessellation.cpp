@@ -18,6 +18,7 @@
 #include "modeling/tessellation/grid_density.h"
 #include "modeling/tessellation/marching_piece.h"
 #include "modeling/tessellation/parametric_grid.h"
+#include "modeling/tessellation/piece_boundary.h"
 #include "modeling/tessellation/quadric_frame.h"
 #include "modeling/tessellation/screen_error.h"
 #include "modeling/tessellation/shared_boundaries.h"
@@ -142,6 +143,7 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, const Level& lv, con
     }
   }
   out.surface_triangles = out.mesh.size();
+  if (!prim.clip.empty()) out.boundary_defects = checkPieceBoundary(out.mesh, out.surface_triangles, region.planes).defects();
   addCaps(caps, capPlanes, region.planes, q, out.mesh);
   out.cap_triangles = out.mesh.size() - out.surface_triangles;
   if (out.mesh.size() == 0) out.method = TessellationMethod::Empty;
@@ -171,7 +173,7 @@ bool reachesBounds(const TriangleMesh3& mesh, const Eigen::AlignedBox3d& bounds,
 // kept. To a pixel error: when the mesh of a bounded clipped piece falls short of the
 // piece's exact extent (primitive_bounds.h) by more than 2ε pixels, the grid is refined
 // (x2, up to three times), then marching tetrahedra is tried and kept if it reaches further.
-PrimitiveTessellation tessellateCovering(const Primitive& prim, const Level& lv, const Camera* camera, double aspect,
+PrimitiveTessellation tessellateReaching(const Primitive& prim, const Level& lv, const Camera* camera, double aspect,
                                          int chordSamples) {
   PrimitiveTessellation t = tessellateOnce(prim, lv, camera, aspect, chordSamples);
   const bool parametric = t.method == TessellationMethod::Parametric || t.method == TessellationMethod::Empty;
@@ -196,6 +198,28 @@ PrimitiveTessellation tessellateCovering(const Primitive& prim, const Level& lv,
     PrimitiveTessellation m = tessellateOnce(prim, lv, camera, aspect, chordSamples, true);
     if (reachesBounds(m.mesh, box, tol) || m.surface_triangles > t.surface_triangles) return m;
   }
+  return t;
+}
+
+// A clipped parametric piece whose triangles are not a proper piece of the surface
+// (piece_boundary.h: vertices outside a plane, open edges off the planes) gets a finer grid
+// (x2, twice), then marching tetrahedra over its region; the first proper mesh is kept, or
+// else the one with the fewest defects.
+PrimitiveTessellation tessellateCovering(const Primitive& prim, const Level& lv, const Camera* camera, double aspect,
+                                         int chordSamples) {
+  PrimitiveTessellation t = tessellateReaching(prim, lv, camera, aspect, chordSamples);
+  if (t.boundary_defects == 0 || t.method != TessellationMethod::Parametric) return t;
+  Level finer = lv;
+  for (int round = 0; round < 2; ++round) {
+    finer.scale *= 2;
+    finer.target *= 4;
+    if (finer.target > lv.max_triangles || 2.0 * t.mesh.size() > lv.max_triangles) break;
+    PrimitiveTessellation f = tessellateReaching(prim, finer, camera, aspect, chordSamples);
+    if (f.boundary_defects < t.boundary_defects) t = std::move(f);
+    if (t.boundary_defects == 0) return t;
+  }
+  PrimitiveTessellation m = tessellateOnce(prim, lv, camera, aspect, chordSamples, true);
+  if (m.boundary_defects < t.boundary_defects && m.method != TessellationMethod::Empty) return m;
   return t;
 }
 

@@ -80,6 +80,9 @@ struct PrimitiveTessellation {
   double mean_chord_error = 0;
   double max_pixel_error = 0;   // pixels, measured in the view (pixel_error mode; screen_error.h)
   double mean_pixel_error = 0;
+  // Clipped pieces: vertices outside the region and open edges off its planes
+  // (piece_boundary.h); 0 for a proper piece.
+  std::size_t boundary_defects = 0;
 };
 
 struct TessellationReport {

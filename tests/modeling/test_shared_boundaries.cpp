@@ -81,9 +81,11 @@ const char* const kScenes[] = {"macropatch_g0.json", "macropatch_g1.json", "macr
 
 }  // namespace
 
-// Not yet met (disabled so that the suite stays green): at eps 2 px, open edges drop from
-// 2715 to 6 on macropatch_g0, 4141 to 577 on macropatch_g1, 19680 to 551 on bspline_g1, but
-// some remain and a few edges are used three times. Enable when the stitching closes them.
+// Not yet met (disabled so that the suite stays green). At eps 2 px, with each piece's own
+// triangles ending on its clip planes (piece_boundary.h), the open edges on shared planes are
+// 0 on macropatch_g0, 9 on macropatch_g1 (was 172) and 21 on bspline_g1 (was 123), with
+// 1 and 13 edges used three times (docs/COMPARE.md "Shared boundaries"). They remain where
+// two pieces' boundary chains end at different corners. Enable when the stitching closes them.
 TEST(SharedBoundaries, DISABLED_EveryEdgeOnASharedPlaneIsUsedTwice) {
   for (const char* name : kScenes) {
     const Scene s = loadShipped(name);
