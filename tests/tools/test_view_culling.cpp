@@ -28,6 +28,7 @@
 #include "modeling/splines/bspline_object.h"
 #include "raster/osmesa/osmesa_renderer.h"
 #include "tools/engines/engine.h"
+#include "tests/sanitized_build.h"
 
 using namespace qacc;
 namespace fs = std::filesystem;
@@ -147,7 +148,8 @@ TEST(ViewCulling, CulledScenesRenderAsTheUnculledOnesFromRandomViews) {
     // A scene whose whole build takes over 1 s (the B-spline volume with G1 knots: 42 000
     // pieces, 6 to 14 s) gets kSlowViews views, so that the test stays within ctest's limit.
     const double buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const int views = buildSeconds > 1.0 ? kSlowViews : kViews;
+    int views = buildSeconds > 1.0 ? kSlowViews : kViews;
+    if (kSanitizedBuild) views = std::max(2, views / 10);  // tests/sanitized_build.h
     // Not compared with the facets engine: csg scenes (it cannot draw them) and objects with an
     // exact surface (it sizes their mesh by the object's piece count, which culling lowers:
     // tessellation.cpp, tessellateExact(surface, object->count, ...) — not yet view-independent).
@@ -206,7 +208,7 @@ TEST(ViewCulling, CulledScenesRenderAsTheUnculledOnesFromRandomViews) {
     ++scenes;
   }
   EXPECT_GE(scenes, 21);
-  std::printf("%d scenes x %d views; facets views where culling removed only spurious facets: %d\n", scenes, kViews,
+  std::printf("%d scenes x %d views (fewer in a sanitized build); facets views where culling removed only spurious facets: %d\n", scenes, kViews,
               spuriousFacetViews);
 }
 
