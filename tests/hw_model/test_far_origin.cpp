@@ -7,8 +7,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "hw_model/config/hw_config.h"
@@ -20,16 +18,9 @@ using namespace qacc;
 
 namespace {
 
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 // gallery.json with every object's translation, the eye and the target moved by (d, d, d).
 Scene movedGallery(double d) {
-  nlohmann::json doc = nlohmann::json::parse(readText(std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json"));
+  nlohmann::json doc = nlohmann::json::parse(readSceneText(std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json"));
   doc["image"] = {{"width", 320}, {"height", 240}};
   for (auto& o : doc["objects"]) {
     auto& t = o["transform"]["translate"];

@@ -17,19 +17,11 @@
 #include "hw_model/report/cost_model.h"
 #include "modeling/geometry/natural_quadrics.h"
 #include "modeling/loader/scene_loader.h"
+#include "tests/hw_model/frame_expectations.h"
 
 using namespace qacc;
 
 namespace {
-
-void expectIdentical(const FrameBuffer& a, const FrameBuffer& b, const std::string& what) {
-  ASSERT_EQ(a.width, b.width);
-  ASSERT_EQ(a.height, b.height);
-  EXPECT_TRUE(a.color.data == b.color.data) << what << ": colour differs";
-  EXPECT_TRUE(a.object == b.object) << what << ": object ids differ";
-  EXPECT_TRUE(a.primitive == b.primitive) << what << ": primitive ids differ";
-  EXPECT_TRUE(a.depth == b.depth) << what << ": depth differs";
-}
 
 HwConfig withHiz(int tile = 8) {
   HwConfig c;

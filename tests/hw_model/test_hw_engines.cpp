@@ -13,21 +13,13 @@
 #include "hw_model/timing/setup_unit.h"
 #include "modeling/geometry/natural_quadrics.h"
 #include "modeling/loader/scene_loader.h"
+#include "tests/hw_model/frame_expectations.h"
 #include "raster/reference/reference_renderer.h"
 
 using namespace qacc;
 namespace fs = std::filesystem;
 
 namespace {
-
-void expectIdentical(const FrameBuffer& a, const FrameBuffer& b, const std::string& what) {
-  ASSERT_EQ(a.width, b.width);
-  ASSERT_EQ(a.height, b.height);
-  EXPECT_TRUE(a.color.data == b.color.data) << what << ": colour differs";
-  EXPECT_TRUE(a.object == b.object) << what << ": object ids differ";
-  EXPECT_TRUE(a.primitive == b.primitive) << what << ": primitive ids differ";
-  EXPECT_TRUE(a.depth == b.depth) << what << ": depth differs";
-}
 
 Scene loneSphereScene(int w, int h) {
   Scene s;

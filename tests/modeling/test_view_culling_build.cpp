@@ -15,7 +15,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <unistd.h>
 #include <string>
 
@@ -27,13 +26,6 @@ using namespace qacc;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string readText(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // A UV sphere of radius 1 as an OBJ: `rings` x `segments` quads, two triangles each.
 void writeSphereObj(const fs::path& path, int rings, int segments) {
@@ -92,7 +84,7 @@ TEST(ViewCullingBuild, ZoomedViewsBuildFewerPiecesThanFullViews) {
   std::vector<Case> cases;
   for (const char* s : {"torus", "bspline_volume_g1", "molecule"}) {
     const fs::path f = scenes / (std::string(s) + ".json");
-    cases.push_back({s, nlohmann::json::parse(readText(f)), f, std::string(s) == "bspline_volume_g1" ? 1 : 2});
+    cases.push_back({s, nlohmann::json::parse(readSceneText(f.string())), f, std::string(s) == "bspline_volume_g1" ? 1 : 2});
   }
   cases.push_back({"mesh (65 536 triangles)", mesh, dir / "mesh.json", 2});
 

@@ -17,9 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -36,13 +34,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kW = 64, kH = 48, kViews = 50, kSlowViews = 6;
-
-std::string readText(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // The shipped scenes, and the test scenes of modelers no shipped scene uses (a triangle mesh
 // from an OBJ file: tests/data/view_culling).
@@ -137,7 +128,7 @@ TEST(ViewCulling, CulledScenesRenderAsTheUnculledOnesFromRandomViews) {
   int scenes = 0, spuriousFacetViews = 0;
   for (const fs::path& path : shippedScenes()) {
     SCOPED_TRACE(path.filename().string());
-    const std::string text = readText(path);
+    const std::string text = readSceneText(path.string());
     nlohmann::json doc = nlohmann::json::parse(text);
     doc["image"]["width"] = kW;
     doc["image"]["height"] = kH;
@@ -214,7 +205,7 @@ TEST(ViewCulling, CulledScenesRenderAsTheUnculledOnesFromRandomViews) {
 
 TEST(ViewCulling, ZoomedTorusSendsFewerThan400Primitives) {
   const fs::path path = fs::path(QACC_SOURCE_DIR) / "scenes" / "torus.json";
-  nlohmann::json doc = nlohmann::json::parse(readText(path));
+  nlohmann::json doc = nlohmann::json::parse(readSceneText(path.string()));
   doc["camera"]["fov_y_deg"] = 4;
   const Scene zoomed = parseScene(doc.dump(), path.string(), ".");
   const Scene off = parseScene(doc.dump(), path.string(), ".", Limits{}, ViewCulling{false, 0, 0});
@@ -226,7 +217,7 @@ TEST(ViewCulling, ZoomedTorusSendsFewerThan400Primitives) {
 
 TEST(ViewCulling, ZoomedBsplineVolumeBuildsFewerThanAQuarterOfItsCells) {
   const fs::path path = fs::path(QACC_SOURCE_DIR) / "scenes" / "bspline_volume_g1.json";
-  const nlohmann::json doc = nlohmann::json::parse(readText(path));
+  const nlohmann::json doc = nlohmann::json::parse(readSceneText(path.string()));
   const JsonNode object(doc.at("objects")[0], "/objects/0", std::make_shared<const std::string>(path.string()));
   const SimplexSpline3 spline = readBsplineVolume(object);
   Scene scene = parseScene(doc.dump(), path.string(), ".", Limits{}, ViewCulling{false, 0, 0});
