@@ -296,7 +296,10 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
       const Side& from = g->side[1 - s];
       PointGrid grid{longest, {}};
       for (std::size_t e = 0; e < into.edges.size(); ++e) grid.add(0.5 * (into.edges[e].a + into.edges[e].b), int(e));
-      for (const auto& [j, x] : from.vertices) {
+      for (const auto& vertex : from.vertices) {
+        // Named copies, not a structured binding: the lambda below captures x (C++17).
+        const int j = vertex.first;
+        const Vector3d& x = vertex.second;
         const double ownGap = distanceToQuadric(prims[std::size_t(j)].quadric, x);
         int best = -1;
         double bestDist = 1e300;
