@@ -10,18 +10,12 @@
 #include "hw_model/engines/functional_engine.h"
 #include "hw_model/report/cost_model.h"
 #include "modeling/loader/scene_loader.h"
+#include "tests/hw_model/csg_scene_file.h"
 #include "tests/hw_model/frame_expectations.h"
 
 using namespace qacc;
 
 namespace {
-
-Scene csgScene(const std::string& name, int w, int h) {
-  Scene s = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/csg/" + name + ".json");
-  s.width = w;
-  s.height = h;
-  return s;
-}
 
 // One csg object: (A ∩ B) ∪ (C − D) ∪ (E − F). A and B overlap only in part, so the
 // tiles of A alone skip the intersection and A with it; D sticks out of C's box, so the

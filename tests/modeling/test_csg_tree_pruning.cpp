@@ -4,38 +4,17 @@
 // leaves in which the absent ones are outside.
 #include <gtest/gtest.h>
 
-#include <functional>
 #include <random>
 #include <stdexcept>
 
 #include "modeling/csg/csg_tree_pruning.h"
+#include "tests/modeling/csg_test_trees.h"
 
 using namespace qacc;
 
 namespace {
 
 using Op = CsgNode::Op;
-
-struct TreeMaker {
-  CsgTree t;
-  int leaf(int primitive) {
-    CsgNode n;
-    n.primitive = primitive;
-    t.nodes.push_back(n);
-    return int(t.nodes.size()) - 1;
-  }
-  int node(Op op, std::vector<int> children) {
-    CsgNode n;
-    n.op = op;
-    n.children = std::move(children);
-    t.nodes.push_back(n);
-    return int(t.nodes.size()) - 1;
-  }
-  CsgTree done(int root) {
-    t.root = root;
-    return t;
-  }
-};
 
 // Per node of t: 1 for a leaf whose primitive is in `primitives`.
 std::vector<char> presentLeaves(const CsgTree& t, std::vector<int> primitives) {
@@ -45,32 +24,11 @@ std::vector<char> presentLeaves(const CsgTree& t, std::vector<int> primitives) {
   return p;
 }
 
-bool treeInside(const CsgTree& t, int n, unsigned state) {
-  const CsgNode& node = t.nodes[std::size_t(n)];
-  switch (node.op) {
-    case Op::Leaf: return (state >> node.primitive) & 1u;
-    case Op::Union:
-      for (int c : node.children)
-        if (treeInside(t, c, state)) return true;
-      return false;
-    case Op::Intersection:
-      for (int c : node.children)
-        if (!treeInside(t, c, state)) return false;
-      return true;
-    case Op::Difference:
-      if (!treeInside(t, node.children[0], state)) return false;
-      for (std::size_t i = 1; i < node.children.size(); ++i)
-        if (treeInside(t, node.children[i], state)) return false;
-      return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 TEST(CsgTreePruning, IntersectionWithAnAbsentOperandIsEmpty) {
   // (A ∩ B) ∪ C with B absent: the intersection goes, and A with it.
-  TreeMaker m;
+  CsgTreeMaker m;
   const int a = m.leaf(0), b = m.leaf(1), c = m.leaf(2);
   const int i = m.node(Op::Intersection, {a, b});
   const CsgTree t = m.done(m.node(Op::Union, {i, c}));
@@ -92,7 +50,7 @@ TEST(CsgTreePruning, IntersectionWithAnAbsentOperandIsEmpty) {
 TEST(CsgTreePruning, DifferenceKeepsItsPresentSubtractedOperandsOnly) {
   // A − B − (C ∩ D) − E with B and D absent: A − E remains; B is dropped; C ∩ D is empty
   // (C pruned); E, present, must stay subtracted.
-  TreeMaker m;
+  CsgTreeMaker m;
   const int a = m.leaf(0), b = m.leaf(1), c = m.leaf(2), d = m.leaf(3), e = m.leaf(4);
   const int cd = m.node(Op::Intersection, {c, d});
   const CsgTree t = m.done(m.node(Op::Difference, {a, b, cd, e}));
@@ -106,7 +64,7 @@ TEST(CsgTreePruning, DifferenceKeepsItsPresentSubtractedOperandsOnly) {
 
 TEST(CsgTreePruning, DifferenceWithAnAbsentFirstOperandIsEmpty) {
   // (A − B) ∪ C with A absent: B is present but not needed.
-  TreeMaker m;
+  CsgTreeMaker m;
   const int a = m.leaf(0), b = m.leaf(1), c = m.leaf(2);
   const int d = m.node(Op::Difference, {a, b});
   const CsgTree t = m.done(m.node(Op::Union, {d, c}));
@@ -115,7 +73,7 @@ TEST(CsgTreePruning, DifferenceWithAnAbsentFirstOperandIsEmpty) {
   EXPECT_EQ(p.leavesPruned, 1);
   EXPECT_EQ(p.productsPruned, 1);
   // Alone, the difference empties the whole tree.
-  TreeMaker m2;
+  CsgTreeMaker m2;
   const int a2 = m2.leaf(0), b2 = m2.leaf(1);
   const CsgTree t2 = m2.done(m2.node(Op::Difference, {a2, b2}));
   const PrunedCsgTree p2 = pruneCsgTree(t2, presentLeaves(t2, {1}));
@@ -125,7 +83,7 @@ TEST(CsgTreePruning, DifferenceWithAnAbsentFirstOperandIsEmpty) {
 }
 
 TEST(CsgTreePruning, UnionDropsItsEmptyChildren) {
-  TreeMaker m;
+  CsgTreeMaker m;
   const int a = m.leaf(0), b = m.leaf(1), c = m.leaf(2);
   const CsgTree t = m.done(m.node(Op::Union, {a, b, c}));
   const PrunedCsgTree p = pruneCsgTree(t, presentLeaves(t, {0, 2}));
@@ -138,7 +96,7 @@ TEST(CsgTreePruning, UnionDropsItsEmptyChildren) {
 }
 
 TEST(CsgTreePruning, RefusesPresenceOfTheWrongSize) {
-  TreeMaker m;
+  CsgTreeMaker m;
   const CsgTree t = m.done(m.leaf(0));
   EXPECT_THROW(pruneCsgTree(t, std::vector<char>(2, 1)), std::invalid_argument);
 }
@@ -146,16 +104,7 @@ TEST(CsgTreePruning, RefusesPresenceOfTheWrongSize) {
 TEST(CsgTreePruning, AgreesWithTheTreeWhereTheAbsentLeavesAreOutside) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 300; ++trial) {
-    TreeMaker m;
-    std::function<int(int)> grow = [&](int depth) -> int {
-      if (depth == 0 || rng() % 4 == 0) return m.leaf(int(rng() % 6));
-      const Op op = Op(1 + rng() % 3);
-      std::vector<int> c;
-      const int n = 1 + int(rng() % 3);
-      for (int i = 0; i < n; ++i) c.push_back(grow(depth - 1));
-      return m.node(op, c);
-    };
-    const CsgTree t = m.done(grow(4));
+    const CsgTree t = randomCsgTree(rng, 4);
     const unsigned presentMask = unsigned(rng() % 64);
     std::vector<int> present;
     for (int q = 0; q < 6; ++q)
@@ -164,8 +113,8 @@ TEST(CsgTreePruning, AgreesWithTheTreeWhereTheAbsentLeavesAreOutside) {
     for (int q : p.tree.leafPrimitives()) ASSERT_TRUE((presentMask >> q) & 1u) << "trial " << trial;
     for (unsigned state = 0; state < 64; ++state) {
       if (state & ~presentMask) continue;  // an absent leaf has no point in the region
-      const bool pruned = p.tree.root >= 0 && treeInside(p.tree, p.tree.root, state);
-      ASSERT_EQ(pruned, treeInside(t, t.root, state)) << "trial " << trial << " state " << state;
+      const bool pruned = p.tree.root >= 0 && csgTreeInside(p.tree, p.tree.root, state);
+      ASSERT_EQ(pruned, csgTreeInside(t, t.root, state)) << "trial " << trial << " state " << state;
     }
   }
 }
