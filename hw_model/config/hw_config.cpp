@@ -121,6 +121,7 @@ const std::map<std::string, Field>& fields() {
     m["csg_list_depth"] = intField(&HwConfig::csg_list_depth, 1, 1024);
     m["csg_leaf_bits"] = intField(&HwConfig::csg_leaf_bits, 1, 24);
     m["csg_tag_bits"] = intField(&HwConfig::csg_tag_bits, 2, 8);
+    m["csg_tile_pruning"] = boolField(&HwConfig::csg_tile_pruning);
     m["hierarchical_z"] = boolField(&HwConfig::hierarchical_z);
     m["hiz_tile_size"] = intField(&HwConfig::hiz_tile_size, 4, 32);
     m["hiz_depth_bits"] = intField(&HwConfig::hiz_depth_bits, 4, 31);

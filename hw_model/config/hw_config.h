@@ -63,6 +63,9 @@ struct HwConfig {
   int csg_list_depth = 32;       // intervals per pixel list (the shipped scenes need up to 32)
   int csg_leaf_bits = 11;        // leaf index of a list entry: up to 2^11 leaves per csg object
   int csg_tag_bits = 4;          // end tag: surface, near/far, or one of 2^4 - 2 clip planes
+  // Per tile, the tree pruned by its leaves' screen boxes (modeling/csg/csg_tree_pruning.h):
+  // only the leaves still needed run; the box tests cost cycles in the CSG issue unit.
+  bool csg_tile_pruning = true;
   // Hierarchical Z (coarse occlusion culling, datapath/hierarchical_z_memory.h, off as on the
   // boards of the 1990s): per screen tile of hiz_tile_size² pixels a conservative maximum
   // stored depth, held in hiz_depth_bits (at most zbuffer_bits); a block of a span whose

@@ -7,6 +7,7 @@
 #include "hw_model/datapath/clip_test.h"
 #include "hw_model/datapath/csg_interval_list.h"
 #include "hw_model/datapath/pixel_datapath.h"
+#include "modeling/csg/csg_tree_pruning.h"
 #include "modeling/scene/scene_error.h"
 
 namespace qacc {
@@ -52,7 +53,28 @@ void drawCsgTile(const CsgPixelTree& tree, const FrameSetup& fs, const HwConfig&
   lists.resize(std::size_t(tw) * std::size_t(th));
   offered.assign(lists.size(), 0);
   for (auto& l : lists) l.clear();
+  // Tile pruning: the leaves binned to the tile are the ones whose screen box touches it;
+  // the tree pruned by them keeps the leaves still needed (csg_tree_pruning.h).
+  thread_local std::vector<char> needed;
+  const bool pruning = cfg.csg_tile_pruning;
+  if (pruning) {
+    thread_local std::vector<char> present;
+    present.assign(tree.tree().nodes.size(), 0);
+    for (int leaf : tree.leavesInTile(tileIndex)) present[std::size_t(tree.leafNode(leaf))] = 1;
+    const PrunedCsgTree pruned = pruneCsgTree(tree.tree(), present);
+    needed = pruned.kept;
+    cc.leaves_tested += std::uint64_t(tree.leafCount());
+    cc.leaves_pruned += std::uint64_t(pruned.leavesPruned);
+    cc.products_pruned += std::uint64_t(pruned.productsPruned);
+    if (job) job->testCycles = int(tree.tree().nodes.size());
+    if (pruned.tree.root < 0) {
+      ++cc.jobs_pruned;
+      if (job) job->pruned = true;
+      return;
+    }
+  }
   for (int leaf : tree.leavesInTile(tileIndex)) {
+    if (pruning && !needed[std::size_t(tree.leafNode(leaf))]) continue;
     const PrimitiveSetup& s = fs.setups[std::size_t(tree.leafPrimitive(leaf))];
     if (!s.visible || s.facet) continue;
     const int passes = ClipTest::passes(int(s.planes.size()), cfg.clip_evaluators);

@@ -1,9 +1,11 @@
 // The accelerator's CSG path (docs/CSG.md): bounded per-pixel interval lists. For a `csg`
-// object in one screen tile, every leaf whose box touches the tile runs through the pixel
+// object in one screen tile, the tree is pruned by the leaves whose boxes touch the tile
+// (csg_tile_pruning, modeling/csg/csg_tree_pruning.h; off: the whole tree), every leaf of
+// the pruned tree whose box touches the tile runs through the pixel
 // datapath in interval mode (PixelDatapath::solidIntervals) over its box ∩ tile, and its
 // intervals are inserted into the pixel's list (datapath/csg_interval_list.h: at most
 // csg_list_depth intervals, the nearest kept on overflow, the pixel counted); the tree is
-// then evaluated per pixel by the same sweep as the reference (raster/reference/csg_hit.h)
+// then evaluated per pixel (on the pruned tree) by the same sweep as the reference (raster/reference/csg_hit.h)
 // on the fixed-point depths, ends within kCsgEndTolerance LSBs counting as one event, and
 // the winning boundary goes through the ordinary Z test with its leaf as the primitive.
 // Datapath only, no time: `hw-cycle` times the same work from a CsgJob record
@@ -69,6 +71,12 @@ struct CsgSweptPixel {
 };
 struct CsgJob {
   int tile = 0, tree = 0;
+  // Tile pruning (csg_tile_pruning): the cycles of the box tester before the job issues
+  // (one per node of the tree: a leaf's box compared with the tile, or an inner node's
+  // emptiness from its operands'), and whether the pruned tree is empty in the tile (the
+  // job then ends after its tests: no list buffer, nothing issued or swept).
+  int testCycles = 0;
+  bool pruned = false;
   std::vector<CsgLeafPixel> issued;
   std::vector<CsgSweptPixel> swept;
 };

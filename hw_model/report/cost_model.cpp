@@ -161,6 +161,22 @@ CostModel CostModel::of(const HwConfig& c, const SceneNeeds* needs) {
                         0,
                         "exit buffer of " + std::to_string(D) + " (comparators, registers), event comparator, "
                         "tree walk (counter adder, node register)"});
+  // Tile pruning (csg_tile_pruning): one box tester in the issue unit, walking the tree's
+  // nodes in post order, one per cycle: a leaf's screen box (four coordinates) compared with
+  // the tile's edges by four comparators; an inner node's emptiness from its operands' flags
+  // (a few gates, not counted); the node counter. The flags (empty, needed) are SRAM, in
+  // two buffers: the tester fills the next job's while the current job issues.
+  if (c.csg_tile_pruning) {
+    const int coordBits = 12;  // screen x or y, as in the pixel tokens
+    m.csgUnits.push_back({"csg_box_tester", 1,
+                          4 * adder(coordBits) + reg(4 * coordBits) + reg(2 * coordBits) + adder(nodeBits) +
+                              reg(nodeBits),
+                          0,
+                          "4 comparators of " + std::to_string(coordBits) +
+                              "-bit screen coordinates (a leaf's box against the tile), box and tile registers, "
+                              "node counter"});
+    m.csgPruneFlagBits = 2.0 * 2.0 * double(2LL << leafBits);
+  }
   m.csgListBitsPerPixel = qacc::csgListBitsPerPixel(c);
   m.csgListBits = double(kCsgListBuffers) * TileBinner::kTileSize * TileBinner::kTileSize * m.csgListBitsPerPixel;
   // Per sweeper: an inside counter per node of a tree of up to 2^csg_leaf_bits leaves.

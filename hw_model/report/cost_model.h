@@ -16,7 +16,8 @@
 // The CSG option (interval lists, docs/CSG.md) is priced apart from the base machine
 // (`csgUnits`, `csgGe()`), so that the cost of a board without it stays comparable: its
 // list memory (kCsgListBuffers tile buffers of 32x32 pixel lists) and the tree state of
-// its sweepers are SRAM, counted in bits; its logic in GE.
+// its sweepers and the flags of its box tester (tile pruning) are SRAM, counted in bits;
+// its logic in GE.
 #pragma once
 #include <string>
 #include <vector>
@@ -46,6 +47,7 @@ struct CostModel {
   double csgListBitsPerPixel = 0;  // one pixel's bounded interval list
   double csgListBits = 0;          // the list memory: tile buffers x 32x32 pixels x bits per pixel
   double csgTreeStateBits = 0;     // the sweepers' per-node inside counters
+  double csgPruneFlagBits = 0;     // tile pruning: two flags per node, two buffers (0 when off)
   // The hierarchical Z unit (HwConfig::hierarchical_z; a unit of `units`, so in the total,
   // when enabled): its logic, and its tile memory in bits per tile (on chip, SRAM; 0 when
   // disabled) beside one layer bit per pixel in the Z-buffer record.

@@ -24,6 +24,10 @@ void CsgCounters::add(const CsgCounters& o) {
   resolved += o.resolved;
   overflowed_pixels += o.overflowed_pixels;
   dropped_intervals += o.dropped_intervals;
+  leaves_tested += o.leaves_tested;
+  leaves_pruned += o.leaves_pruned;
+  products_pruned += o.products_pruned;
+  jobs_pruned += o.jobs_pruned;
   cycles += o.cycles;
 }
 
@@ -38,6 +42,10 @@ std::string CsgCounters::line(const HwConfig& cfg) const {
                 (unsigned long long)max_list_ends, (unsigned long long)overflowed_pixels,
                 (unsigned long long)dropped_intervals);
   std::string s = buf;
+  if (cfg.csg_tile_pruning)
+    s += "; tile pruning: " + std::to_string(leaves_tested) + " leaf box tests, " + std::to_string(leaves_pruned) +
+         " leaves and " + std::to_string(products_pruned) + " products pruned, " + std::to_string(jobs_pruned) +
+         " tile jobs empty";
   if (cycles) s += "; CSG pass " + std::to_string(cycles) + " cycles (simulated)";
   return s;
 }
@@ -80,6 +88,9 @@ nlohmann::ordered_json toJ(const HwStats& s) {
                 {"interval_ends", s.csg.interval_ends}, {"max_list_ends", s.csg.max_list_ends},
                 {"resolved_pixels", s.csg.resolved}, {"overflowed_pixels", s.csg.overflowed_pixels},
                 {"dropped_intervals", s.csg.dropped_intervals}, {"cycles", s.csg.cycles},
+                {"tile_pruning", s.configuration.csg_tile_pruning},
+                {"leaves_tested", s.csg.leaves_tested}, {"leaves_pruned", s.csg.leaves_pruned},
+                {"products_pruned", s.csg.products_pruned}, {"jobs_pruned", s.csg.jobs_pruned},
                 {"list_depth_intervals", s.configuration.csg_list_depth},
                 {"list_bits_per_pixel", csgListBitsPerPixel(s.configuration)}};
   j["overdraw"] = s.overdraw();
@@ -142,6 +153,7 @@ nlohmann::ordered_json toJ(const HwStats& s) {
                              {"list_bits_per_pixel", s.cost.csgListBitsPerPixel},
                              {"list_memory_bits", s.cost.csgListBits},
                              {"tree_state_bits", s.cost.csgTreeStateBits},
+                             {"prune_flag_bits", s.cost.csgPruneFlagBits},
                              {"units", csgCost}};
   if (s.cost.hizBitsPerTile > 0) {
     const double tiles = std::ceil(double(s.width) / s.configuration.hiz_tile_size) *
@@ -224,7 +236,12 @@ std::vector<std::string> HwStats::summaryLines() const {
     }
     std::snprintf(buf, sizeof buf, " kGE; list memory %.0f bits (%.0f per pixel, %d tile buffers), tree state %.0f bits",
                   this->cost.csgListBits, this->cost.csgListBitsPerPixel, kCsgListBuffers, this->cost.csgTreeStateBits);
-    out.push_back(c + buf);
+    c += buf;
+    if (this->cost.csgPruneFlagBits > 0) {
+      std::snprintf(buf, sizeof buf, ", pruning flags %.0f bits", this->cost.csgPruneFlagBits);
+      c += buf;
+    }
+    out.push_back(c);
   }
   out.push_back(cost + " kGE; Z-buffer memory off-chip, " + std::to_string(int(this->cost.zbufferBitsPerPixel)) +
                 " bits per pixel");

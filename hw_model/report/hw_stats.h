@@ -34,6 +34,14 @@ struct CsgCounters {
   std::uint64_t resolved = 0;           // pixels whose tree was evaluated
   std::uint64_t overflowed_pixels = 0;  // pixels whose list overflowed (their image may be wrong)
   std::uint64_t dropped_intervals = 0;  // intervals left out of full lists
+  // Tile pruning (csg_tile_pruning, modeling/csg/csg_tree_pruning.h), zero with it off:
+  // per tile job, every leaf's box compared with the tile; the present leaves left out
+  // because they sit under an empty intersection or difference, those products, and the
+  // jobs whose whole tree is empty in their tile (no list buffer, nothing issued).
+  std::uint64_t leaves_tested = 0;
+  std::uint64_t leaves_pruned = 0;
+  std::uint64_t products_pruned = 0;
+  std::uint64_t jobs_pruned = 0;
   // hw-cycle: the cycles of the CSG pass, simulated by its timed units after the other
   // primitives (engines/csg_cycle_pass.h); included in `cycles`.
   std::uint64_t cycles = 0;

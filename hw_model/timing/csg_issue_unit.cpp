@@ -1,22 +1,41 @@
 #include "hw_model/timing/csg_issue_unit.h"
 
+#include <limits>
+
 namespace qacc {
 
 bool CsgIssueUnit::tick(std::uint64_t now) {
-  (void)now;
+  now_ = now;
   bool changed = false, stalled = false;
   while (freed_.ready()) {
     freed_.receive();
     ++free_;
     changed = true;
   }
-  if (job_ < 0 && next_ < jobs_.size() && free_ > 0) {
-    job_ = int(next_++);
-    --free_;
-    k_ = 0;
-    markers_ = 0;
-    countItem();
-    changed = true;
+  if (next_ < jobs_.size()) {
+    const CsgJob& next = jobs_[next_];
+    // The box tester works one job ahead: it starts on the next job while the current one
+    // issues (its flags go to the second of two flag buffers).
+    if (next.testCycles > 0 && testedJob_ != next_) {
+      testedJob_ = next_;
+      testDone_ = now + std::uint64_t(next.testCycles);
+      changed = true;
+    }
+    const bool tested = next.testCycles == 0 || now >= testDone_;
+    if (!tested) {
+      // the job waits for its tests
+    } else if (next.pruned) {  // empty in its tile: done after the tests, the tester moves on
+      ++next_;
+      countItem();
+      changed = true;
+    } else if (job_ < 0 && free_ > 0) {
+      job_ = int(next_++);
+      --free_;
+      k_ = 0;
+      markers_ = 0;
+      countItem();
+      changed = true;
+    }
   }
   if (job_ >= 0) {
     const std::vector<CsgLeafPixel>& px = jobs_[std::size_t(job_)].issued;
@@ -49,10 +68,14 @@ bool CsgIssueUnit::tick(std::uint64_t now) {
       if (markers_ == (P == 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << P) - 1)) job_ = -1;
     }
   }
-  if (changed) countBusy();
+  if (changed || testing()) countBusy();
   else if (stalled || holdsWork()) countStall();  // waiting for a channel or a free list buffer
   else countIdle();
   return changed;
+}
+
+std::uint64_t CsgIssueUnit::nextEvent() const {
+  return testing() ? testDone_ : std::numeric_limits<std::uint64_t>::max();
 }
 
 }  // namespace qacc

@@ -21,6 +21,7 @@ bool CsgListUnit::tick(std::uint64_t now) {
     busyUntil_[p] = now + std::uint64_t(std::max(1, n));
     countItem();
   }
+  while (nextJob_ < jobs_.size() && jobs_[nextJob_].pruned) ++nextJob_;  // never issued
   if (nextJob_ < jobs_.size() && markers_[nextJob_] == int(in_.size())) {
     if (out_.canSend()) {
       out_.send(int(nextJob_++));

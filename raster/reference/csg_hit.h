@@ -48,8 +48,15 @@ class CsgPixelTree {
     bool entering;
     int tag;   // DepthBound tag: surface, view or cap plane
   };
-  int leafPrimitive(int leaf) const { return tree_->nodes[std::size_t(leafNodes_[std::size_t(leaf)])].primitive; }
+  int leafPrimitive(int leaf) const { return tree_->nodes[std::size_t(leafNode(leaf))].primitive; }
+  int leafNode(int leaf) const { return leafNodes_[std::size_t(leaf)]; }  // its node in tree()
+  int leafCount() const { return int(leafNodes_.size()); }
+  const CsgTree& tree() const { return *tree_; }
   const std::vector<int>& leavesInTile(int tile) const { return leafBins_.bin(tile); }
+  // The sweep keeps a counter per node of tree() and a leaf without ends leaves its counter
+  // at zero, so the ends of the leaves of a pruned tree (modeling/csg/csg_tree_pruning.h,
+  // which keeps the node numbering and drops only operands without points) are swept on
+  // that pruned tree: a dropped operand, never entered, adds nothing to its parent.
   bool resolve(std::vector<Boundary>& ends, double tolerance, CsgHit& hit) const;
 
  private:

@@ -11,19 +11,9 @@
 #include "modeling/loader/scene_loader.h"
 #include "modeling/scene/scene_error.h"
 #include "raster/reference/reference_renderer.h"
+#include "tests/hw_model/csg_scene_file.h"
 
 using namespace qacc;
-
-namespace {
-
-Scene csgScene(const std::string& name, int w, int h) {
-  Scene s = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/csg/" + name + ".json");
-  s.width = w;
-  s.height = h;
-  return s;
-}
-
-}  // namespace
 
 TEST(CsgEngine, HwMatchesTheReferenceOnEveryCsgScene) {
   const HwConfig cfg;
