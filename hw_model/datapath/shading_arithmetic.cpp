@@ -33,6 +33,7 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg, Over
   std::vector<char> used(mats.size(), 0);
   for (const Primitive& p : scene.primitives)
     if (p.material >= 0 && std::size_t(p.material) < used.size()) used[std::size_t(p.material)] = 1;
+  std::vector<OverflowCounter> romEvents(mats.size());  // what each material's ROM counted
   for (std::size_t mi = 0; mi < mats.size(); ++mi) {
     const Material& m = mats[mi];
     MaterialQ q;
@@ -41,13 +42,33 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg, Over
       L.materials.push_back(std::move(q));
       continue;
     }
+    // Materials with the same specular weight and shininess have the same ROM: built once
+    // (the copy counts the same quantisation events as building it again).
+    bool shared = false;
+    for (std::size_t j = 0; j < mi && !shared; ++j)
+      if (used[j] && mats[j].specular == m.specular && mats[j].shininess == m.shininess) {
+        q.specular = L.materials[j].specular;
+        ovf.events += romEvents[j].events;
+        ovf.zeroed += romEvents[j].zeroed;
+        ovf.coarse += romEvents[j].coarse;
+        romEvents[mi] = romEvents[j];
+        shared = true;
+      }
+    if (shared) {
+      L.materials.push_back(std::move(q));
+      continue;
+    }
     const int n = (1 << uf) + 1;
     q.specular.resize(std::size_t(n));
     // Entries saturate at the ROM's 32-bit width, counted as shading overflows (a specular
     // weight above about 5e5 wrapped to negative values before: a 13 dB image, said nowhere).
+    OverflowCounter& rom = romEvents[mi];
     for (int i = 0; i < n; ++i)
       q.specular[std::size_t(i)] = std::int32_t(
-          quantize(m.specular * std::pow(std::ldexp(double(i), -uf), m.shininess), cf, 32, OverflowMode::Saturate, ovf));
+          quantize(m.specular * std::pow(std::ldexp(double(i), -uf), m.shininess), cf, 32, OverflowMode::Saturate, rom));
+    ovf.events += rom.events;
+    ovf.zeroed += rom.zeroed;
+    ovf.coarse += rom.coarse;
     L.materials.push_back(std::move(q));
   }
   const int ns = (1 << cf) + 1;
