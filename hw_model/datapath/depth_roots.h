@@ -10,6 +10,7 @@
 //    a quantises to 0 has no reciprocal: it is not drawn (counted by the engines).
 #pragma once
 #include <cstdint>
+#include <utility>
 
 #include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/overflow_counters.h"
@@ -37,6 +38,53 @@ inline i128 clampDepth(i128 z, const HwConfig& cfg, OverflowCounters& ovf) {
     return lo;
   }
   return z;
+}
+
+// depthRoots for the rounding mode R and variant V of the configuration (cfg.rounding ==
+// R, cfg.depth_variant == V): the pixel datapath's inner loop is instantiated per mode.
+template <Rounding R, DepthVariant V>
+inline DepthRoots depthRootsT(const PrimitiveSetup& s, const HwConfig& cfg, i128 b, i128 c, i128 sq,
+                              OverflowCounters& ovf) {
+  // A root t (depth format, t units) as window depth z = z0 + t 2^-zShift.
+  const i128 hi = (i128(1) << (cfg.depth_bits - 1)) - 1;
+  const auto windowDepth = [&](i128 t) {
+    const i128 z = s.z0 + shiftRoundR<R>(clampDepth(t, cfg, ovf), s.zShift);
+    return z > hi ? hi : (z < -hi - 1 ? -hi - 1 : z);
+  };
+  DepthRoots r;
+  const int Fz = cfg.depth_frac_bits;
+  if constexpr (V == DepthVariant::Stable) {
+    const i128 q = b >= 0 ? -(b + sq) : -(b - sq);
+    if (q == 0) {  // b = 0 and Δ = 0
+      if (s.a != 0) {
+        r.count = 1;
+        r.z[0] = s.z0;
+      }
+      return r;
+    }
+    if (s.a == 0) {
+      r.count = 1;
+      r.z[0] = windowDepth(divRound(shl(c, Fz), q, R));
+      return r;
+    }
+    i128 z1 = windowDepth(divRound(shl(q, Fz), s.a, R));
+    i128 z2 = windowDepth(divRound(shl(c, Fz), q, R));
+    if (z2 < z1) std::swap(z1, z2);
+    r.count = 2;
+    r.z[0] = z1;
+    r.z[1] = z2;
+    return r;
+  } else {
+    if (!s.recipValid) return r;
+    const int sh = s.recipShift - Fz;
+    i128 z1 = windowDepth(shiftRoundR<R>((-b - sq) * s.recipM, sh));
+    i128 z2 = windowDepth(shiftRoundR<R>((-b + sq) * s.recipM, sh));
+    if (z2 < z1) std::swap(z1, z2);
+    r.count = 2;
+    r.z[0] = z1;
+    r.z[1] = z2;
+    return r;
+  }
 }
 
 }  // namespace qacc

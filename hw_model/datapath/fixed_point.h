@@ -84,6 +84,25 @@ inline T shiftRoundT(T v, int shift, Rounding r) {
 }
 inline i128 shiftRound(i128 v, int shift, Rounding r) { return shiftRoundT<i128>(v, shift, r); }
 
+// shiftRoundT with the rounding mode fixed at compile time (the datapaths are instantiated
+// per configured mode, so their inner loops test no mode): truncation is the floor shift;
+// round-to-nearest with ties up is floor((v + 2^(shift-1)) · 2^-shift), the same value
+// (rem >= half ⇔ the added half carries into the kept bits), taken unless the addition
+// overflows T; ties-to-even keeps the general form. Tests check it against shiftRoundT.
+template <Rounding R, typename T>
+inline T shiftRoundR(T v, int shift) {
+  if (shift <= 0) return v * (T(1) << (-shift));
+  if constexpr (R == Rounding::Truncate) {
+    return v >> shift;
+  } else if constexpr (R == Rounding::Nearest) {
+    T sum;
+    if (!__builtin_add_overflow(v, T(1) << (shift - 1), &sum)) return sum >> shift;
+    return shiftRoundT<T>(v, shift, R);
+  } else {
+    return shiftRoundT<T>(v, shift, R);
+  }
+}
+
 // Integer quotient num / den (den != 0) with the given rounding (Truncate = toward zero).
 inline i128 divRound(i128 num, i128 den, Rounding r) {
   constexpr i128 k63 = i128(1) << 62;

@@ -22,6 +22,21 @@ PixelDatapath::PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg)
   accRange_ = WidthRange(cfg.interp_acc_bits);
   depthHi_ = (i128(1) << (cfg.depth_bits - 1)) - 1;
   depthLo_ = -depthHi_ - 1;
+  const bool stable = cfg.depth_variant == DepthVariant::Stable;
+  switch (cfg.rounding) {
+    case Rounding::Truncate:
+      evalFloored_ = stable ? &PixelDatapath::evaluateFloored<Rounding::Truncate, DepthVariant::Stable>
+                            : &PixelDatapath::evaluateFloored<Rounding::Truncate, DepthVariant::Reciprocal>;
+      break;
+    case Rounding::Nearest:
+      evalFloored_ = stable ? &PixelDatapath::evaluateFloored<Rounding::Nearest, DepthVariant::Stable>
+                            : &PixelDatapath::evaluateFloored<Rounding::Nearest, DepthVariant::Reciprocal>;
+      break;
+    case Rounding::NearestEven:
+      evalFloored_ = stable ? &PixelDatapath::evaluateFloored<Rounding::NearestEven, DepthVariant::Stable>
+                            : &PixelDatapath::evaluateFloored<Rounding::NearestEven, DepthVariant::Reciprocal>;
+      break;
+  }
 }
 
 void PixelDatapath::startSpan(int u, int v) {
@@ -52,8 +67,11 @@ void PixelDatapath::stepRight() {
   }
 }
 
-PixelOutcome PixelDatapath::evaluate(OverflowCounters& ovf) {
-  PixelOutcome o = evaluateUnfloored(ovf);
+PixelOutcome PixelDatapath::evaluate(OverflowCounters& ovf) { return (this->*evalFloored_)(ovf); }
+
+template <Rounding R, DepthVariant V>
+PixelOutcome PixelDatapath::evaluateFloored(OverflowCounters& ovf) {
+  PixelOutcome o = evaluateUnfloored<R, V>(ovf);
   // The depth floor (PrimitiveSetup::zFloor): one comparator and a multiplexer after the
   // depth unit, so that the floor bounds every depth of the primitive (hierarchical Z).
   if (o.hit && o.z < s_.zFloor) {
@@ -63,6 +81,7 @@ PixelOutcome PixelDatapath::evaluate(OverflowCounters& ovf) {
   return o;
 }
 
+template <Rounding R, DepthVariant V>
 PixelOutcome PixelDatapath::evaluateUnfloored(OverflowCounters& ovf) {
   PixelOutcome o;
   const int Fz = cfg_.depth_frac_bits, Fi = cfg_.interp_frac_bits;
@@ -110,8 +129,8 @@ PixelOutcome PixelDatapath::evaluateUnfloored(OverflowCounters& ovf) {
   o.candidate = true;
   const i128 din = deltaRange_.fit(delta, cfg_.overflow, ovf.sqrt);
   const i128 sd = i128(SqrtExtractor::compute((unsigned __int128)din));
-  const i128 sq = valueRange_.fit(shiftRound(sd, s_.ed - s_.e, cfg_.rounding), cfg_.overflow, ovf.sqrt);
-  const DepthRoots r = depthRoots(s_, cfg_, b, c, sq, ovf);
+  const i128 sq = valueRange_.fit(shiftRoundR<R>(sd, s_.ed - s_.e), cfg_.overflow, ovf.sqrt);
+  const DepthRoots r = depthRootsT<R, V>(s_, cfg_, b, c, sq, ovf);
   for (int k = 0; k < r.count; ++k) {
     const i128 z = r.z[k];
     if (z >= 0 && z <= one && ClipTest::keptByAll(s_.planes, hv_.data(), z, Fz)) {

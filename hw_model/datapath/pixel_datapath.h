@@ -51,7 +51,13 @@ class PixelDatapath {
   int solidIntervals(OverflowCounters& ovf, FixedDepthInterval out[2]);
 
  private:
+  // evaluate() for the configured rounding mode R and depth variant V, chosen once per
+  // primitive (evalFloored_): the per-pixel path tests neither.
+  template <Rounding R, DepthVariant V>
+  PixelOutcome evaluateFloored(OverflowCounters& ovf);
+  template <Rounding R, DepthVariant V>
   PixelOutcome evaluateUnfloored(OverflowCounters& ovf);
+  PixelOutcome (PixelDatapath::*evalFloored_)(OverflowCounters&) = nullptr;
   const PrimitiveSetup& s_;
   const HwConfig& cfg_;
   QuadraticInterpolator delta_, c_;

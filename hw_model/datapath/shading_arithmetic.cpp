@@ -33,6 +33,7 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg, Over
   std::vector<char> used(mats.size(), 0);
   for (const Primitive& p : scene.primitives)
     if (p.material >= 0 && std::size_t(p.material) < used.size()) used[std::size_t(p.material)] = 1;
+  std::vector<OverflowCounter> romEvents(mats.size());  // what each material's ROM counted
   for (std::size_t mi = 0; mi < mats.size(); ++mi) {
     const Material& m = mats[mi];
     MaterialQ q;
@@ -41,13 +42,33 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg, Over
       L.materials.push_back(std::move(q));
       continue;
     }
+    // Materials with the same specular weight and shininess have the same ROM: built once
+    // (the copy counts the same quantisation events as building it again).
+    bool shared = false;
+    for (std::size_t j = 0; j < mi && !shared; ++j)
+      if (used[j] && mats[j].specular == m.specular && mats[j].shininess == m.shininess) {
+        q.specular = L.materials[j].specular;
+        ovf.events += romEvents[j].events;
+        ovf.zeroed += romEvents[j].zeroed;
+        ovf.coarse += romEvents[j].coarse;
+        romEvents[mi] = romEvents[j];
+        shared = true;
+      }
+    if (shared) {
+      L.materials.push_back(std::move(q));
+      continue;
+    }
     const int n = (1 << uf) + 1;
     q.specular.resize(std::size_t(n));
     // Entries saturate at the ROM's 32-bit width, counted as shading overflows (a specular
     // weight above about 5e5 wrapped to negative values before: a 13 dB image, said nowhere).
+    OverflowCounter& rom = romEvents[mi];
     for (int i = 0; i < n; ++i)
       q.specular[std::size_t(i)] = std::int32_t(
-          quantize(m.specular * std::pow(std::ldexp(double(i), -uf), m.shininess), cf, 32, OverflowMode::Saturate, ovf));
+          quantize(m.specular * std::pow(std::ldexp(double(i), -uf), m.shininess), cf, 32, OverflowMode::Saturate, rom));
+    ovf.events += rom.events;
+    ovf.zeroed += rom.zeroed;
+    ovf.coarse += rom.coarse;
     L.materials.push_back(std::move(q));
   }
   const int ns = (1 << cf) + 1;
@@ -72,7 +93,7 @@ inline std::int64_t isqrt63(std::int64_t x) {
 
 inline bool fits63(i128 v) { return v > -(i128(1) << 62) && v < (i128(1) << 62); }
 
-template <typename T>
+template <typename T, Rounding R>
 void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
   const int nb = cfg.normal_bits, uf = cfg.unit_frac_bits, G = 8;
   T n[3];
@@ -87,7 +108,7 @@ void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
     }
     const int shift = (64 - __builtin_clzll(m)) - (nb - 1);  // leading-zero normaliser
     for (int k = 0; k < 3; ++k)
-      n[k] = T(shift > 0 ? shiftRoundT<std::int64_t>(a[k], shift, cfg.rounding) : a[k] * (std::int64_t(1) << -shift));
+      n[k] = T(shift > 0 ? shiftRoundR<R, std::int64_t>(a[k], shift) : a[k] * (std::int64_t(1) << -shift));
   } else {
     int len = 0;
     for (int k = 0; k < 3; ++k) len = std::max(len, bitLength(in[k]));
@@ -96,14 +117,14 @@ void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
       return;
     }
     const int shift = len - (nb - 1);  // leading-zero normaliser
-    for (int k = 0; k < 3; ++k) n[k] = T(shift > 0 ? shiftRound(in[k], shift, cfg.rounding) : shl(in[k], -shift));
+    for (int k = 0; k < 3; ++k) n[k] = T(shift > 0 ? shiftRoundR<R, i128>(in[k], shift) : shl(in[k], -shift));
   }
   const T len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   if (cfg.shading_normalizer == Normalizer::Newton) {
     // unit = n / sqrt(len2) in 1.uf, with 1/sqrt(len2) = y · 2^-(2P+1+k) from the rsqrt unit.
     const ReciprocalSqrt::Result r = ReciprocalSqrt::compute((unsigned __int128)len2);
     const int sh = r.k + 2 * ReciprocalSqrt::kPrecision + 1 - uf;
-    for (int k = 0; k < 3; ++k) out[k] = shiftRoundT<T>(n[k] * T(r.y), sh, cfg.rounding);
+    for (int k = 0; k < 3; ++k) out[k] = shiftRoundR<R, T>(n[k] * T(r.y), sh);
     return;
   }
   // Reciprocal square root by recurrence: R = 2^(uf + G + nb - 1) / sqrt(len2 · 2^2G), then unit = n R >> (nb - 1).
@@ -114,8 +135,8 @@ void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
     out[0] = out[1] = out[2] = 0;
     return;
   }
-  const T R = T(divRound(i128(1) << (uf + G + nb - 1), root, cfg.rounding));
-  for (int k = 0; k < 3; ++k) out[k] = shiftRoundT<T>(n[k] * R, nb - 1, cfg.rounding);
+  const T rs = T(divRound(i128(1) << (uf + G + nb - 1), root, R));
+  for (int k = 0; k < 3; ++k) out[k] = shiftRoundR<R, T>(n[k] * rs, nb - 1);
 }
 
 inline i128 evalField(const VectorSetup& f, int k, int u, int v, i128 z, int Fz) {
@@ -123,16 +144,15 @@ inline i128 evalField(const VectorSetup& f, int k, int u, int v, i128 z, int Fz)
   return shl(c.A * u + c.B * v + c.C, Fz) + f.cz[k] * z;
 }
 
-template <typename T>
-inline T dot(const T a[3], const T b[3], int uf, Rounding r) {
-  return shiftRoundT<T>(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf, r);
+template <Rounding R, typename T>
+inline T dot(const T a[3], const T b[3], int uf) {
+  return shiftRoundR<R, T>(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf);
 }
 
-template <typename T>
+template <typename T, Rounding R>
 std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
                                    int v, i128 z, int cap) {
   const int Fz = cfg.depth_frac_bits, uf = cfg.unit_frac_bits, cf = cfg.color_frac_bits;
-  const Rounding rm = cfg.rounding;
   i128 raw[3];
   T N[3], V[3];
   if (cap >= 0) {
@@ -140,10 +160,10 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
   } else {
     for (int k = 0; k < 3; ++k) raw[k] = evalField(s.normal, k, u, v, z, Fz);
   }
-  normalizeT<T>(raw, cfg, N);
+  normalizeT<T, R>(raw, cfg, N);
   for (int k = 0; k < 3; ++k) raw[k] = evalField(s.view, k, u, v, z, Fz);
-  normalizeT<T>(raw, cfg, V);
-  if (dot<T>(N, V, uf, rm) < 0)
+  normalizeT<T, R>(raw, cfg, V);
+  if (dot<R>(N, V, uf) < 0)
     for (int k = 0; k < 3; ++k) N[k] = -N[k];  // two-sided
   const int mi = s.material >= 0 && s.material < int(L.materials.size()) ? s.material : 0;
   const LightingSetup::MaterialQ& m = L.materials[std::size_t(mi)];
@@ -151,7 +171,7 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
   T out[3] = {0, 0, 0};
   for (const LightingSetup::LightQ& l : L.lights) {
     if (l.type == Light::Type::Ambient) {
-      for (int k = 0; k < 3; ++k) out[k] += shiftRoundT<T>(T(l.color[k]) * T(m.color[k]), cf, rm);
+      for (int k = 0; k < 3; ++k) out[k] += shiftRoundR<R, T>(T(l.color[k]) * T(m.color[k]), cf);
       continue;
     }
     T Lv[3];
@@ -159,18 +179,18 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
       for (int k = 0; k < 3; ++k) Lv[k] = T(l.dir[k]);
     } else {
       for (int k = 0; k < 3; ++k) raw[k] = evalField(s.pointLights[std::size_t(l.point)], k, u, v, z, Fz);
-      normalizeT<T>(raw, cfg, Lv);
+      normalizeT<T, R>(raw, cfg, Lv);
     }
-    const T ndl = std::min(dot<T>(N, Lv, uf, rm), one);
+    const T ndl = std::min(dot<R>(N, Lv, uf), one);
     if (ndl <= 0) continue;
     T H[3];
     i128 hs[3];
     for (int k = 0; k < 3; ++k) hs[k] = i128(Lv[k]) + i128(V[k]);
-    normalizeT<T>(hs, cfg, H);
-    const T ndh = std::clamp<T>(dot<T>(N, H, uf, rm), 0, one);
+    normalizeT<T, R>(hs, cfg, H);
+    const T ndh = std::clamp<T>(dot<R>(N, H, uf), 0, one);
     const T spec = m.specular[std::size_t(ndh)];
     for (int k = 0; k < 3; ++k)
-      out[k] += shiftRoundT<T>(T(l.color[k]) * (shiftRoundT<T>(T(m.color[k]) * ndl, uf, rm) + spec), cf, rm);
+      out[k] += shiftRoundR<R, T>(T(l.color[k]) * (shiftRoundR<R, T>(T(m.color[k]) * ndl, uf) + spec), cf);
   }
   std::array<std::uint8_t, 3> rgb;
   const T top = T(1) << cf;
@@ -178,18 +198,30 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
   return rgb;
 }
 
+// shadeT instantiated for the configured rounding mode.
+template <typename T>
+std::array<std::uint8_t, 3> shadeRounded(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
+                                         int v, i128 z, int cap) {
+  switch (cfg.rounding) {
+    case Rounding::Truncate: return shadeT<T, Rounding::Truncate>(s, L, cfg, u, v, z, cap);
+    case Rounding::Nearest: return shadeT<T, Rounding::Nearest>(s, L, cfg, u, v, z, cap);
+    case Rounding::NearestEven: break;
+  }
+  return shadeT<T, Rounding::NearestEven>(s, L, cfg, u, v, z, cap);
+}
+
 }  // namespace
 
 std::array<std::uint8_t, 3> shadePixel(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
                                        i128 z, int cap, OverflowCounter& ovf) {
   (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
-  if (cfg.normal_bits <= 23) return shadeT<std::int64_t>(s, L, cfg, u, v, z, cap);
-  return shadeT<i128>(s, L, cfg, u, v, z, cap);
+  if (cfg.normal_bits <= 23) return shadeRounded<std::int64_t>(s, L, cfg, u, v, z, cap);
+  return shadeRounded<i128>(s, L, cfg, u, v, z, cap);
 }
 
 std::array<std::uint8_t, 3> shadePixelWide(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
                                            int v, i128 z, int cap) {
-  return shadeT<i128>(s, L, cfg, u, v, z, cap);
+  return shadeRounded<i128>(s, L, cfg, u, v, z, cap);
 }
 
 }  // namespace qacc

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "hw_model/datapath/fixed_point.h"
@@ -119,6 +120,48 @@ TEST(FixedPoint, RoundingModes) {
   EXPECT_EQ(divRound(-7, 2, Rounding::Truncate), -3);
   EXPECT_EQ(divRound(-7, 2, Rounding::Nearest), -4);
   EXPECT_EQ(divRound(i128(1) << 100, i128(3), Rounding::Truncate), (i128(1) << 100) / 3);
+}
+
+// The rounding shift with the mode fixed at compile time (the datapaths' inner loops) against
+// the general definition: random values of every width and sign, ties (rem = half, on odd
+// and even floors), values next to the register's ends (where v + half overflows), shifts
+// from 1 to the register width less one, and shift <= 0.
+template <Rounding R, typename T>
+void expectShiftRoundRMatches(std::mt19937_64& rng, int valueBits) {
+  const T top = std::numeric_limits<T>::max(), bottom = std::numeric_limits<T>::min();
+  for (int i = 0; i < 200000; ++i) {
+    const int shift = i % 97 == 0 ? -int(rng() % 8) : 1 + int(rng() % std::uint64_t(valueBits - 2));
+    const int bits = 1 + int(rng() % std::uint64_t(valueBits - 1));
+    T v = T(((unsigned __int128)rng() << 64 | rng()) & (((unsigned __int128)1 << bits) - 1));
+    if (rng() & 1) v = -v;
+    switch (i % 6) {
+      case 1:  // a tie: the dropped bits are exactly one half
+        if (shift > 0) v = T(v & ~((T(1) << shift) - 1)) + (T(1) << (shift - 1));
+        break;
+      case 2: v = top - T(rng() % 4); break;
+      case 3: v = bottom + T(rng() % 4); break;
+      default: break;
+    }
+    if (shift <= 0 && (v > (top >> 8) || v < (bottom >> 8))) v >>= 8;  // the exact product fits T
+    ASSERT_EQ(shiftRoundR<R>(v, shift), shiftRoundT<T>(v, shift, R))
+        << toString(R) << " v=" << (long double)v << " shift=" << shift;
+  }
+}
+
+TEST(FixedPoint, CompileTimeRoundingEqualsTheGeneralRoundingShift) {
+  std::mt19937_64 rng(2026);
+  expectShiftRoundRMatches<Rounding::Truncate, std::int64_t>(rng, 64);
+  expectShiftRoundRMatches<Rounding::Nearest, std::int64_t>(rng, 64);
+  expectShiftRoundRMatches<Rounding::NearestEven, std::int64_t>(rng, 64);
+  expectShiftRoundRMatches<Rounding::Truncate, i128>(rng, 127);
+  expectShiftRoundRMatches<Rounding::Nearest, i128>(rng, 127);
+  expectShiftRoundRMatches<Rounding::NearestEven, i128>(rng, 127);
+  // ties at both signs and the register's end
+  EXPECT_EQ(shiftRoundR<Rounding::Nearest>(std::int64_t(5), 1), 3);
+  EXPECT_EQ(shiftRoundR<Rounding::Nearest>(std::int64_t(-5), 1), -2);
+  EXPECT_EQ(shiftRoundR<Rounding::Nearest>(std::numeric_limits<std::int64_t>::max(), 1), std::int64_t(1) << 62);
+  EXPECT_EQ(shiftRoundR<Rounding::NearestEven>(std::int64_t(7), 1), 4);
+  EXPECT_EQ(shiftRoundR<Rounding::Truncate>(std::int64_t(-5), 1), -3);
 }
 
 TEST(FixedPoint, QuantizeIsSymmetricAndCountsOverflow) {
