@@ -14,6 +14,7 @@
 #include "modeling/loader/scene_loader.h"
 #include "modeling/modelers/molecule.h"
 #include "modeling/support/bounded_file.h"
+#include "modeling/tessellation/tessellation.h"
 
 namespace fs = std::filesystem;
 using namespace qacc;
@@ -297,4 +298,29 @@ TEST(Reliability, BsplineVolumeRegionLimitIsExact) {
       << msg;
   limits.max_cells = regions;
   EXPECT_EQ(loadError(text, limits), "");
+}
+
+// Facets: the triangles are counted as each piece is tessellated, and tessellation stops the
+// moment the count passes the limit (a marching-tetrahedra piece can give more triangles than
+// the level, so the level x primitives estimate alone is no bound).
+TEST(Reliability, FacetTrianglesOverTheLimitStopTheTessellation) {
+  const std::string sphere = R"({"type": "sphere", "center": [0,0,0], "radius": 1})";
+  const Scene s = parseScene(sceneWith(sphere + "," + sphere + "," + sphere), "s.json", ".");
+  TessellationOptions options;
+  options.triangles = 128;
+  const std::size_t triangles = tessellateScene(s, options).size();
+  ASSERT_GT(triangles, 3u * 100u);
+  options.max_scene_triangles = triangles - 1;
+  try {
+    tessellateScene(s, options);
+    FAIL() << "accepted";
+  } catch (const std::length_error& e) {
+    EXPECT_NE(std::string(e.what()).find("(counted while tessellating, stopped at the limit) needs " +
+                                         std::to_string(triangles) + " triangles or more, above the limit of " +
+                                         std::to_string(triangles - 1) + " (raise it with --max-triangles)"),
+              std::string::npos)
+        << e.what();
+  }
+  options.max_scene_triangles = triangles;
+  EXPECT_EQ(tessellateScene(s, options).size(), triangles);
 }
