@@ -137,11 +137,28 @@ Eigen::AlignedBox<double, D> readDomain(const JsonNode& d) {
 template <int D>
 using Spline = std::conditional_t<D == 2, SimplexSpline2, SimplexSpline3>;
 
+// The compiled basis is priced before it is compiled (SimplexSplineBase::basisLeafBound):
+// over --max-cells, the mesh is refused.
 template <int D>
-Spline<D> readSpline(const JsonNode& o) {
+void checkBasisPrice(const JsonNode& o, std::size_t simplices, int degree, const Limits& limits) {
+  const std::size_t leaves = Spline<D>::basisLeafBound(simplices, degree);
+  if (leaves <= limits.max_cells) return;
+  const std::size_t functions = Spline<D>::multiIndices(degree).size();
+  std::size_t perFunction = 1;
+  for (int level = 0; level < degree; ++level) perFunction *= D + 1;
+  const std::string what = std::string("the B-spline basis (") + std::to_string(simplices) +
+                           (D == 2 ? " triangles" : " tetrahedra") + " x " + std::to_string(functions) +
+                           " basis functions x " + std::to_string(perFunction) + " recursion leaves)";
+  o.get("grid").value_or(o.get(D == 2 ? "triangles" : "tetrahedra").value_or(o))
+      .fail(Limits::exceeded(what, leaves, "leaves", limits.max_cells, "max-cells"));
+}
+
+template <int D>
+Spline<D> readSpline(const JsonNode& o, const Limits& limits) {
   // The cells become quadrics: a spline of higher degree has no exact quadric per cell.
   const int degree = o.get("degree") ? int(o.at("degree").integer(1, 2)) : 2;
   const Mesh<D> mesh = readMesh<D>(o);
+  checkBasisPrice<D>(o, mesh.simplices.size(), degree, limits);
   const std::string continuity = o.string("continuity", "G1");
   if (continuity != "G0" && continuity != "G1") o.at("continuity").fail("continuity must be \"G0\" or \"G1\"");
   Spline<D> spline(degree, mesh.vertices, mesh.simplices, readKnots<D>(o, mesh, degree, continuity == "G1"));
@@ -197,19 +214,33 @@ Spline<D> readSpline(const JsonNode& o) {
 
 template <int D>
 std::vector<Primitive> build(const JsonNode& o, ObjectContext& ctx) {
-  const Spline<D> spline = readSpline<D>(o);
+  const Spline<D> spline = readSpline<D>(o, ctx.limits);
   if constexpr (D == 2) {
     return spline.toPrimitives(ctx.material, 0);
   } else {
     const auto start = std::chrono::steady_clock::now();
     SimplexSpline3::CellStats st;
-    std::vector<Primitive> prims = spline.toPrimitives(ctx.material, 0, &st, o.boolean("cull", true), ctx.view);
+    const bool cull = o.boolean("cull", true);
+    std::vector<Primitive> prims;
+    try {
+      prims = spline.toPrimitives(ctx.material, 0, &st, cull, ctx.view, ctx.limits.max_cells);
+    } catch (const SimplexSpline3::RegionLimitExceeded& e) {
+      // The regions, estimated from a sample or counted while cutting (simplex_spline3.h).
+      const std::string what =
+          e.sampled ? "the cell decomposition (estimated from " + std::to_string(e.sampled) + " of " +
+                          std::to_string(e.tets) + " tetrahedra)"
+                    : "the cell decomposition (counted while cutting, stopped at the limit)";
+      o.get("grid").value_or(o.get("tetrahedra").value_or(o))
+          .fail(Limits::exceeded(what, e.regions, e.sampled ? "regions" : "regions or more", ctx.limits.max_cells,
+                                 "max-cells"));
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    char note[256];
+    char note[320];
     std::snprintf(note, sizeof note,
-                  "%zu tetrahedra (%zu culled whole), %zu knot-triangle planes, %zu regions culled, %zu tetrahedra "
-                  "and regions outside the view, %zu cells made, %zu emitted, %.2f s",
-                  st.tets, st.tets_culled, st.planes, st.regions_culled, st.view_culled, st.cells, st.crossed, seconds);
+                  "%zu tetrahedra (%zu culled whole), %zu knot-triangle planes, %zu regions made, %zu regions culled, "
+                  "%zu tetrahedra and regions outside the view, %zu cells made, %zu emitted, %.2f s",
+                  st.tets, st.tets_culled, st.planes, st.regions, st.regions_culled, st.view_culled, st.cells,
+                  st.crossed, seconds);
     ctx.note = note;
     return prims;
   }
@@ -217,9 +248,9 @@ std::vector<Primitive> build(const JsonNode& o, ObjectContext& ctx) {
 
 }  // namespace
 
-SimplexSpline3 readBsplineVolume(const JsonNode& o) {
+SimplexSpline3 readBsplineVolume(const JsonNode& o, const Limits& limits) {
   if (!o.get("dimension") || o.at("dimension").integer(2, 3) != 3) o.fail("not a bspline volume (\"dimension\": 3)");
-  return readSpline<3>(o);
+  return readSpline<3>(o, limits);
 }
 
 std::vector<Primitive> buildBspline(const JsonNode& o, ObjectContext& ctx) {

@@ -44,7 +44,8 @@ namespace qacc {
 
 std::vector<Primitive> buildBspline(const JsonNode& o, ObjectContext& ctx);
 // The spline of a volume object ("dimension": 3) as buildBspline reads it, domain and
-// coefficients set: its crossedCells() are the object's primitives.
-SimplexSpline3 readBsplineVolume(const JsonNode& o);
+// coefficients set: its crossedCells() are the object's primitives. A basis priced over
+// limits.max_cells is refused before it is compiled.
+SimplexSpline3 readBsplineVolume(const JsonNode& o, const Limits& limits = Limits{});
 
 }  // namespace qacc

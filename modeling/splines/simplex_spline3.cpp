@@ -1,6 +1,7 @@
 #include "modeling/splines/simplex_spline3.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -442,8 +443,27 @@ SimplexSpline3::CellStats& SimplexSpline3::CellStats::operator+=(const CellStats
   crossed += o.crossed;
   planes += o.planes;
   view_culled += o.view_culled;
+  regions += o.regions;
   return *this;
 }
+
+SimplexSpline3::RegionLimitExceeded::RegionLimitExceeded(std::size_t regions_, std::size_t sampled_, std::size_t tets_)
+    : std::runtime_error("the cell decomposition needs " + std::string(sampled_ ? "about " : "more than ") +
+                         std::to_string(sampled_ ? regions_ : regions_ - 1) + " regions"),
+      regions(regions_),
+      sampled(sampled_),
+      tets(tets_) {}
+
+// The regions made so far by all threads, against the limit.
+struct SimplexSpline3::RegionCount {
+  std::atomic<std::size_t> made{0};
+  std::size_t limit = SIZE_MAX;
+  std::size_t tets = 0;
+  void add(std::size_t k, CellStats& stats) {
+    stats.regions += k;
+    if (made.fetch_add(k, std::memory_order_relaxed) + k > limit) throw RegionLimitExceeded(limit + 1, 0, tets);
+  }
+};
 
 namespace {
 
@@ -458,7 +478,8 @@ bool mayBeSeen(const ConvexPolyhedron& region, const ViewVolume* view) {
 }  // namespace
 
 std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bool cull, double eps,
-                                                               CellStats& stats, const ViewVolume* view) const {
+                                                               CellStats& stats, const ViewVolume* view,
+                                                               RegionCount& regions) const {
   std::vector<Cell> out;
   const auto& T = simplices_[t];
   Tetrahedron tet;
@@ -467,6 +488,7 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
   const ConvexPolyhedron start = tetRegion(tet, domain_, planes, eps);
   if (start.empty()) return out;
   ++stats.tets;
+  regions.add(1, stats);
   if (!mayBeSeen(start, view)) {
     ++stats.view_culled;
     return out;
@@ -537,6 +559,7 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
       CutRegion a{{}, {}, {}, false}, b{{}, {}, {}, false};
       if (!r.poly.split(groups[r.planes[best]].id, planes.unit, eps, a.poly, b.poly))
         throw std::logic_error("SimplexSpline3: a crossing plane did not cut");
+      regions.add(2, stats);
       a.planes = r.planes;
       a.planes.erase(a.planes.begin() + std::ptrdiff_t(best));
       b.planes = a.planes;
@@ -563,7 +586,8 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decomposeTet(std::size_t t, bo
   return out;
 }
 
-std::vector<SimplexSpline3::Cell> SimplexSpline3::decompose(bool cull, CellStats* stats, const ViewVolume* view) const {
+std::vector<SimplexSpline3::Cell> SimplexSpline3::decompose(bool cull, CellStats* stats, const ViewVolume* view,
+                                                            std::size_t maxRegions) const {
   if (n_ > 2) throw std::invalid_argument("SimplexSpline3: cells are made for degree <= 2");
   Eigen::AlignedBox3d all;
   for (const Vec& v : verts_) all.extend(v);
@@ -571,11 +595,39 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::decompose(bool cull, CellStats
   const std::size_t n = simplices_.size();
   std::vector<std::vector<Cell>> per(n);
   std::vector<CellStats> st(n);
-  ParallelErrors errors;
+  RegionCount regions;
+  regions.limit = maxRegions;
+  regions.tets = n;
+  // The sample first (every tetrahedron when there are few), then the others.
+  const std::size_t sampled = std::min(n, kRegionSample);
+  std::vector<std::size_t> order;
+  std::vector<char> inSample(n, 0);
+  for (std::size_t k = 0; k < sampled; ++k) {
+    const std::size_t t = (2 * k + 1) * n / (2 * sampled);
+    inSample[t] = 1;
+    order.push_back(t);
+  }
+  const std::size_t sampleEnd = order.size();
+  for (std::size_t t = 0; t < n; ++t)
+    if (!inSample[t]) order.push_back(t);
+  auto run = [&](std::size_t begin, std::size_t end) {
+    ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1)
-  for (long long t = 0; t < (long long)n; ++t)
-    errors.run([&] { per[std::size_t(t)] = decomposeTet(std::size_t(t), cull, eps, st[std::size_t(t)], view); });
-  errors.rethrow();
+    for (long long i = (long long)begin; i < (long long)end; ++i)
+      errors.run([&] {
+        const std::size_t t = order[std::size_t(i)];
+        per[t] = decomposeTet(t, cull, eps, st[t], view, regions);
+      });
+    errors.rethrow();
+  };
+  run(0, sampleEnd);
+  if (sampleEnd < n) {
+    const double perTet = double(regions.made.load()) / double(sampleEnd);
+    const double estimate = perTet * double(n);
+    if (estimate > 2.0 * double(maxRegions))
+      throw RegionLimitExceeded(estimate >= double(SIZE_MAX) ? SIZE_MAX : std::size_t(std::ceil(estimate)), sampleEnd, n);
+  }
+  run(sampleEnd, n);
   std::vector<Cell> out;
   CellStats total;
   for (std::size_t t = 0; t < n; ++t) {
@@ -593,9 +645,9 @@ std::vector<SimplexSpline3::Cell> SimplexSpline3::crossedCells(CellStats* stats)
 }
 
 std::vector<Primitive> SimplexSpline3::toPrimitives(int material, int object, CellStats* stats, bool cull,
-                                                    const ViewVolume* view) const {
+                                                    const ViewVolume* view, std::size_t maxRegions) const {
   std::vector<Primitive> out;
-  for (Cell& c : decompose(cull, stats, view)) {
+  for (Cell& c : decompose(cull, stats, view, maxRegions)) {
     Primitive prim;
     prim.quadric = c.quadric;
     prim.clip = std::move(c.faces);

@@ -30,8 +30,19 @@
 // exactly as without a view (a region's cuts depend only on itself), so the cells that
 // remain are the unculled model's.
 // Tetrahedra are processed in parallel (OpenMP); the output order is the tetrahedra's.
+//
+// Bounded work (toPrimitives' maxRegions, the scene's --max-cells): the regions a
+// decomposition makes (each tetrahedron meeting the domain, and two per cut) are not known
+// before it runs. A sample of up to kRegionSample tetrahedra, evenly spread over the list, is
+// decomposed first and their regions extrapolated to all tetrahedra; an estimate above twice
+// the limit is refused before the others are cut (RegionLimitExceeded, estimated). The
+// regions are also counted while the tetrahedra are cut, sample included, and the moment the
+// count passes the limit the decomposition stops (RegionLimitExceeded, counted), so the limit
+// is exact whatever the estimate said. The sample's cells are kept, not made twice.
 #pragma once
 #include <array>
+#include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -68,7 +79,17 @@ class SimplexSpline3 : public SimplexSplineBase<3> {
     std::size_t crossed = 0;         // cells F can vanish in (emitted)
     std::size_t planes = 0;          // distinct cutting planes of the tetrahedra (summed)
     std::size_t view_culled = 0;     // tetrahedra and regions dropped because they miss the view
+    std::size_t regions = 0;         // regions made: the tetrahedra above and two per cut
     CellStats& operator+=(const CellStats& o);
+  };
+  // Tetrahedra decomposed first to estimate the regions of all (see the file comment).
+  static constexpr std::size_t kRegionSample = 64;
+  // The decomposition asked for more regions than maxRegions.
+  struct RegionLimitExceeded : std::runtime_error {
+    RegionLimitExceeded(std::size_t regions, std::size_t sampled, std::size_t tets);
+    std::size_t regions;  // the estimate, or maxRegions + 1 when counted
+    std::size_t sampled;  // tetrahedra of the sample the estimate came from; 0 when counted
+    std::size_t tets;     // tetrahedra of the mesh
   };
   // Every cell: convex polyhedra covering the tetrahedralisation (∩ domain), one quadric
   // each, `crossed` set by the cell tests. Degree <= 2.
@@ -77,13 +98,17 @@ class SimplexSpline3 : public SimplexSplineBase<3> {
   std::vector<Cell> crossedCells(CellStats* stats = nullptr) const;
   // The surface F = 0: one quadric per crossed cell (every cell with cull = false), clipped by
   // the cell's facets.
+  // At most maxRegions regions are made (RegionLimitExceeded beyond, see the file comment).
   std::vector<Primitive> toPrimitives(int material = 0, int object = 0, CellStats* stats = nullptr,
-                                      bool cull = true, const ViewVolume* view = nullptr) const;
+                                      bool cull = true, const ViewVolume* view = nullptr,
+                                      std::size_t maxRegions = SIZE_MAX) const;
 
  private:
-  std::vector<Cell> decompose(bool cull, CellStats* stats, const ViewVolume* view = nullptr) const;
+  struct RegionCount;
+  std::vector<Cell> decompose(bool cull, CellStats* stats, const ViewVolume* view = nullptr,
+                              std::size_t maxRegions = SIZE_MAX) const;
   std::vector<Cell> decomposeTet(std::size_t tet, bool cull, double eps, CellStats& stats,
-                                 const ViewVolume* view) const;
+                                 const ViewVolume* view, RegionCount& regions) const;
 };
 
 // Knot clouds for a tetrahedralisation (simplexKnotClouds<3>).

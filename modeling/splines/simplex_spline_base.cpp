@@ -125,6 +125,22 @@ std::vector<typename SimplexSplineBase<D>::Beta> SimplexSplineBase<D>::multiIndi
 }
 
 template <int D>
+std::size_t SimplexSplineBase<D>::basisLeafBound(std::size_t simplices, int degree) {
+  constexpr std::size_t kMax = std::numeric_limits<std::size_t>::max();
+  auto times = [](std::size_t a, std::size_t b) { return b != 0 && a > kMax / b ? kMax : a * b; };
+  std::size_t leaves = times(simplices, multiIndices(degree).size());
+  for (int level = 0; level < degree; ++level) leaves = times(leaves, std::size_t(D + 1));
+  return leaves;
+}
+
+template <int D>
+std::size_t SimplexSplineBase<D>::leafCount() const {
+  std::size_t leaves = 0;
+  for (const Basis& b : basis_) leaves += b.leaves.size();
+  return leaves;
+}
+
+template <int D>
 std::vector<typename SimplexSplineBase<D>::Vec> SimplexSplineBase<D>::knotSet(std::size_t s, const Beta& b) const {
   std::vector<Vec> V;
   for (int c = 0; c <= D; ++c)

@@ -44,6 +44,12 @@ class SimplexSplineBase {
   const std::vector<Simplex>& simplices() const { return simplices_; }
   // |β| = n in descending lexicographic order (BBTetra's order for D = 3).
   static std::vector<Beta> multiIndices(int n);
+  // The leaves the compiled basis of `simplices` simplices at degree n holds, priced before it
+  // is compiled: simplices x C(n + D, D) basis functions x (D + 1)^n leaves each (the recursion
+  // drops one of the D + 1 knots of the chosen simplex per level, n levels from n + D + 1 knots
+  // down to D + 1). Exact for generic knots (G1 clouds); an upper bound when knots coincide
+  // (G0), where a branch whose knots lie in a hyperplane ends early. Saturates at SIZE_MAX.
+  static std::size_t basisLeafBound(std::size_t simplices, int degree);
 
   Vec knot(int vertex, int k) const {
     return k == 0 ? verts_[std::size_t(vertex)] : knots_[std::size_t(vertex)][std::size_t(k) - 1];
@@ -98,6 +104,8 @@ class SimplexSplineBase {
     double value(const Vec& u, int n) const;
   };
   const std::vector<Basis>& basisFunctions() const { return basis_; }
+  // Leaves of the compiled basis, summed over the basis functions (<= basisLeafBound).
+  std::size_t leafCount() const;
   double coefficientOf(const Basis& b) const { return coef_[b.simplex][b.beta]; }
   // Indices (ascending) of the basis functions whose support box meets `box`.
   std::vector<std::size_t> basisNear(const Box& box) const;

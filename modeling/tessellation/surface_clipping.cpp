@@ -51,9 +51,11 @@ Vector3d Domain::ontoCorner(const Vector3d& x, const HalfSpace& h1, const HalfSp
 
 Polygon clipPolygon(const Polygon& in, const Domain& d, const std::vector<HalfSpace>& planes) {
   Polygon poly = in;
+  std::vector<char> kept;  // reused across the planes
+  Polygon out;
   for (std::size_t k = 0; k < planes.size() && !poly.empty(); ++k) {
     const unsigned bit = k < 32 ? (1u << k) : 0u;
-    std::vector<char> kept(poly.size());
+    kept.assign(poly.size(), 0);
     bool all = true, none = true;
     for (std::size_t i = 0; i < poly.size(); ++i) {
       kept[i] = (poly[i].tags & bit) ? 1 : char(planes[k].keeps(planes[k].eval(d.position(poly[i].coord))));
@@ -62,7 +64,7 @@ Polygon clipPolygon(const Polygon& in, const Domain& d, const std::vector<HalfSp
     }
     if (all) continue;
     if (none) return {};
-    Polygon out;
+    out.clear();
     for (std::size_t i = 0; i < poly.size(); ++i) {
       const std::size_t j = (i + 1) % poly.size();
       if (kept[i]) out.push_back(poly[i]);

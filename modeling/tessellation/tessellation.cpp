@@ -6,12 +6,14 @@
 #include "modeling/tessellation/tessellation.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
 
 #include "modeling/geometry/primitive_bounds.h"
 #include "modeling/geometry/quadric_type.h"
+#include "modeling/support/limits.h"
 #include "modeling/support/parallel_errors.h"
 #include "modeling/tessellation/clip_region.h"
 #include "modeling/tessellation/exact_facets.h"
@@ -320,14 +322,25 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
       exactDone[std::size_t(e)] = true;
     }
   }
+  // The triangles made so far, against options.max_scene_triangles.
+  std::atomic<std::size_t> made{0};
+  auto count = [&](std::size_t k) {
+    if (made.fetch_add(k, std::memory_order_relaxed) + k > options.max_scene_triangles)
+      throw std::length_error(Limits::exceeded("facets: the tessellation of " + std::to_string(n) +
+                                                   " primitives (counted while tessellating, stopped at the limit)",
+                                               options.max_scene_triangles + 1, "triangles or more",
+                                               options.max_scene_triangles, "max-triangles"));
+  };
   // Pieces, in parallel (each depends on its primitive and the view only).
   std::vector<PrimitiveTessellation> pieces(n);
   ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1)
   for (long i = 0; i < long(n); ++i)
     errors.run([&] {
-      if (exactOf[std::size_t(i)] < 0)
+      if (exactOf[std::size_t(i)] < 0) {
         pieces[std::size_t(i)] = tessellatePrimitive(scene.primitives[std::size_t(i)], options, &scene.camera, aspect, &view);
+        count(pieces[std::size_t(i)].mesh.size());
+      }
     });
   errors.rethrow();
   // Shared boundaries sampled once for both sides (shared_boundaries.h).
@@ -358,6 +371,7 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
       const int grid = em.grid;
       const double maxError = em.max_error, meanError = em.mean_error;
       const TriangleMesh3 t = tess::exactSurfaceFacets(std::move(em), p.object, p.material, int(i));
+      count(t.size());
       all.append(t);
       ++rep.exact_surfaces;
       rep.exact_triangles += t.size();

@@ -35,6 +35,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -66,6 +67,9 @@ struct TessellationOptions {
   double pixel_error = 0;
   int max_triangles = 1 << 20;  // cap per primitive when refining by chord error
   int chord_samples = 6;    // barycentric subdivisions per triangle edge when measuring chord error
+  // tessellateScene counts the triangles as each piece (or exact surface) is made and stops
+  // (std::length_error, naming --max-triangles) the moment the count passes this.
+  std::size_t max_scene_triangles = SIZE_MAX;
 };
 
 enum class TessellationMethod { Parametric, Planar, MarchingTetrahedra, Empty };
@@ -109,6 +113,7 @@ PrimitiveTessellation tessellatePrimitive(const Primitive& prim, const Tessellat
                                           const ScreenView* view = nullptr);
 // Whole scene: per-triangle object/material/primitive indices filled in. Options are
 // checked first (std::invalid_argument naming them: chord_error and pixel_error both > 0).
+// Over options.max_scene_triangles: std::length_error, as soon as the count passes it.
 TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& options,
                               TessellationReport* report = nullptr);
 

@@ -14,6 +14,7 @@
 #include "modeling/loader/scene_loader.h"
 #include "modeling/modelers/molecule.h"
 #include "modeling/support/bounded_file.h"
+#include "modeling/tessellation/tessellation.h"
 
 namespace fs = std::filesystem;
 using namespace qacc;
@@ -220,4 +221,106 @@ TEST(Reliability, LargestBsplineHeightFieldBuilds) {
       "continuity": "G1", "knot_radius": 0.2, "height": "0.35 (x^2 + y^2) - 0.025 (x^4 + y^4) + 0.2 x y",
       "domain": [[-2, -2], [2, 2]]})"), "s.json", ".", Limits{}, ViewCulling{false, 0, 0});
   EXPECT_GT(s.primitives.size(), 190000u);
+}
+
+namespace {
+
+// A B-spline volume over the Kuhn tetrahedralisation of a grid of `n` boxes (n = "[nx, ny, nz]").
+std::string bsplineVolume(const std::string& n) {
+  return R"({"type": "bspline", "dimension": 3, "degree": 2,
+      "grid": {"min": [-1.5, -1.5, -0.75], "max": [1.5, 1.5, 0.75], "n": )" + n + R"js(},
+      "continuity": "G1", "knot_radius": 0.4,
+      "field": "(x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + y^2)", "params": {"R": 0.75, "r": 0.4},
+      "sampling": "taylor"})js";
+}
+
+// The "N regions made" of a bspline volume's note.
+std::size_t regionsMade(const Scene& s) {
+  const std::string& note = s.objects.at(0).note;
+  const std::size_t end = note.find(" regions made");
+  EXPECT_NE(end, std::string::npos) << note;
+  const std::size_t begin = note.rfind(", ", end);
+  return std::stoull(note.substr(begin + 2, end - begin - 2));
+}
+
+}  // namespace
+
+// A B-spline volume of 32³ boxes with G1 knots compiled its basis (31 M recursion leaves)
+// before any limit was looked at: over 120 s and 7.6 GB. The basis is now priced from the
+// mesh alone (triangles or tetrahedra x basis functions x (D + 1)^degree leaves), before it
+// is compiled, and refused over --max-cells.
+TEST(Reliability, BsplineBasisOverTheCellLimitIsRefusedBeforeItIsCompiled) {
+  const std::string height = R"js({"type": "bspline", "degree": 2, "grid": {"min": [-3, -3], "max": [3, 3], "n": 8},
+      "continuity": "G1", "knot_radius": 0.2, "height": "0.35 (x^2 + y^2)"})js";
+  // 128 triangles x 6 basis functions x 3² leaves.
+  Limits few;
+  few.max_cells = 6911;
+  const std::string msg = loadError(sceneWith(height), few);
+  EXPECT_NE(msg.find("/objects/0/grid: the B-spline basis (128 triangles x 6 basis functions x 9 recursion leaves) "
+                     "needs 6912 leaves, above the limit of 6911 (raise it with --max-cells)"),
+            std::string::npos)
+      << msg;
+  few.max_cells = 6912;
+  EXPECT_EQ(loadError(sceneWith(height), few), "");
+  // The volume that ran out of memory: 196 608 tetrahedra x 10 x 4² leaves, refused at once.
+  const std::string volume = loadError(sceneWith(bsplineVolume("32")));
+  EXPECT_NE(volume.find("196608 tetrahedra x 10 basis functions x 16 recursion leaves) needs 31457280 leaves"),
+            std::string::npos)
+      << volume;
+}
+
+// The regions of a volume's cell decomposition are estimated from a sample of its
+// tetrahedra before the others are cut, and refused when the estimate is over twice the limit.
+TEST(Reliability, BsplineVolumeRegionsOverTheCellLimitAreRefusedFromASample) {
+  // 300 tetrahedra (bspline_volume_g1): 48 000 leaves, 482 862 regions; the 64 sampled give an
+  // estimate of 603 029, over twice the limit, before the other 236 are cut.
+  Limits limits;
+  limits.max_cells = 150000;
+  const std::string msg = loadError(sceneWith(bsplineVolume("[5, 5, 2]")), limits);
+  EXPECT_NE(msg.find("/objects/0/grid: the cell decomposition (estimated from 64 of 300 tetrahedra) needs "),
+            std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find(" regions, above the limit of 150000 (raise it with --max-cells)"), std::string::npos) << msg;
+}
+
+// The regions are also counted while the tetrahedra are cut: the limit is exact whatever the
+// estimate says (here the sample is every tetrahedron, so nothing is refused before cutting).
+TEST(Reliability, BsplineVolumeRegionLimitIsExact) {
+  const std::string text = sceneWith(bsplineVolume("[2, 2, 1]"));
+  const std::size_t regions = regionsMade(parseScene(text, "s.json", "."));
+  ASSERT_GT(regions, 24u * 160u);  // above the basis's leaves, so the regions decide
+  Limits limits;
+  limits.max_cells = regions - 1;
+  const std::string msg = loadError(text, limits);
+  EXPECT_NE(msg.find("/objects/0/grid: the cell decomposition (counted while cutting, stopped at the limit) needs " +
+                     std::to_string(regions) + " regions or more, above the limit of " + std::to_string(regions - 1)),
+            std::string::npos)
+      << msg;
+  limits.max_cells = regions;
+  EXPECT_EQ(loadError(text, limits), "");
+}
+
+// Facets: the triangles are counted as each piece is tessellated, and tessellation stops the
+// moment the count passes the limit (a marching-tetrahedra piece can give more triangles than
+// the level, so the level x primitives estimate alone is no bound).
+TEST(Reliability, FacetTrianglesOverTheLimitStopTheTessellation) {
+  const std::string sphere = R"({"type": "sphere", "center": [0,0,0], "radius": 1})";
+  const Scene s = parseScene(sceneWith(sphere + "," + sphere + "," + sphere), "s.json", ".");
+  TessellationOptions options;
+  options.triangles = 128;
+  const std::size_t triangles = tessellateScene(s, options).size();
+  ASSERT_GT(triangles, 3u * 100u);
+  options.max_scene_triangles = triangles - 1;
+  try {
+    tessellateScene(s, options);
+    FAIL() << "accepted";
+  } catch (const std::length_error& e) {
+    EXPECT_NE(std::string(e.what()).find("(counted while tessellating, stopped at the limit) needs " +
+                                         std::to_string(triangles) + " triangles or more, above the limit of " +
+                                         std::to_string(triangles - 1) + " (raise it with --max-triangles)"),
+              std::string::npos)
+        << e.what();
+  }
+  options.max_scene_triangles = triangles;
+  EXPECT_EQ(tessellateScene(s, options).size(), triangles);
 }

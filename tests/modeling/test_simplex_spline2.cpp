@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 #include "modeling/scene/scene_error.h"
@@ -182,4 +183,14 @@ TEST(SimplexSpline, SceneTypeEmitsClippedHeightFieldCells) {
     EXPECT_EQ(e.file(), "c.json");
     EXPECT_EQ(e.jsonPath(), "/objects/0/degree") << e.what();
   }
+}
+
+// The price of the basis, known before it is compiled, is its leaf count for generic knots
+// and a bound when knots coincide (branches whose knots lie on a line end early).
+TEST(SimplexSpline, BasisLeafBoundIsTheCompiledLeafCount) {
+  const std::size_t bound = SimplexSpline2::basisLeafBound(32, 2);
+  EXPECT_EQ(bound, 32u * 6u * 9u);
+  EXPECT_EQ(makeSpline(true).leafCount(), bound);
+  EXPECT_LE(makeSpline(false).leafCount(), bound);
+  EXPECT_EQ(SimplexSpline2::basisLeafBound(std::size_t(1) << 62, 2), SIZE_MAX);  // saturates
 }

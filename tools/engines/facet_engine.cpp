@@ -38,7 +38,14 @@ FacetRun renderFacetScene(const Scene& scene, const TessellationOptions& to, Fac
   if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
   FacetRun run;
   const auto t0 = std::chrono::steady_clock::now();
-  TriangleMesh3 mesh = tessellateScene(scene, to, &run.tessellation);
+  TessellationOptions bounded = to;
+  bounded.max_scene_triangles = max_triangles;
+  TriangleMesh3 mesh;
+  try {
+    mesh = tessellateScene(scene, bounded, &run.tessellation);
+  } catch (const std::length_error& e) {
+    throw std::invalid_argument(e.what());
+  }
   run.tessellate_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (mesh.size() > max_triangles)
     throw std::invalid_argument(Limits::exceeded("facets: the tessellation of " +
