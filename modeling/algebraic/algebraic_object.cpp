@@ -84,7 +84,10 @@ std::vector<Primitive> buildAlgebraic(const JsonNode& o, ObjectContext& ctx) {
   ctx.note = "level " + std::to_string(r.level) + ": " + std::to_string(r.cells) + " cells, " +
              std::to_string(r.built_cells) + " built, " + std::to_string(r.view_culled_cells) + " outside the view, " +
              std::to_string(r.kept_cells) + " pieces";
-  if (spec.exact_reference) ctx.scene.exact_surfaces.push_back(std::make_shared<AlgebraicSurface>(spec.f, spec.box));
+  if (spec.exact_reference) {
+    ctx.scene.exact_surfaces.push_back(std::make_shared<AlgebraicSurface>(spec.f, spec.box));
+    ctx.model_cells = std::size_t(r.cells);  // the facets' budget: every cell, whatever the view kept
+  }
   return std::move(r.primitives);
 }
 

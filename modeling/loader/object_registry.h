@@ -33,6 +33,11 @@ struct ObjectContext {
   // frame the builder returns its primitives in), or null when nothing may be culled. A
   // builder may skip any piece whose conservative bounds miss it.
   const ViewVolume* view = nullptr;
+  // The cells of the object's whole model, independent of the view (e.g. the algebraic
+  // modeler's Kuhn tetrahedra at its level), for a builder that gives an exact surface: the
+  // facets engine sizes the surface's mesh by it (tessellation/exact_facets.h), so that view
+  // culling, which lowers the pieces emitted, does not change that mesh. 0: not given.
+  std::size_t model_cells = 0;
 };
 
 using ObjectBuilder = std::function<std::vector<Primitive>(const JsonNode& object, ObjectContext& ctx)>;

@@ -196,6 +196,7 @@ struct BuiltObject {
   std::vector<Primitive> prims;
   int material = 0;
   std::string type, note;
+  std::size_t model_cells = 0;
   Placement transform;
   std::vector<HalfSpace> clip;
 };
@@ -252,6 +253,7 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
   }
   o.finish();
   out.note = ctx.note;
+  out.model_cells = ctx.model_cells;
   for (Primitive& p : out.prims) {
     // A plane listed twice (in "clip", or already the builder's) is added once: the pair
     // bounds nothing more, and the accelerator's cap logic lost the cap on such a tie (a
@@ -317,6 +319,7 @@ void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::m
   so.count = built.prims.size();
   so.material = built.material;
   so.note = built.note;
+  so.model_cells = built.model_cells;
   if (scene.exact_surfaces.size() > exactBefore) {
     // The builder gave the object's true surface (exact_surface.h): place and clip it like the pieces.
     so.exact_surface = int(scene.exact_surfaces.size()) - 1;

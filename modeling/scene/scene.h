@@ -21,6 +21,9 @@ struct SceneObject {
   int material = 0;           // the object's material
   int exact_surface = -1;     // index into Scene::exact_surfaces, or -1
   std::string note;           // the builder's account (ObjectContext::note), may be empty
+  // The cells of the object's whole model, whatever view culling kept (ObjectContext::
+  // model_cells; 0: not given): the facets engine sizes the mesh of its exact surface by it.
+  std::size_t model_cells = 0;
 };
 
 struct Scene {

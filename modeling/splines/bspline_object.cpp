@@ -216,7 +216,10 @@ template <int D>
 std::vector<Primitive> build(const JsonNode& o, ObjectContext& ctx) {
   const Spline<D> spline = readSpline<D>(o, ctx.limits);
   if constexpr (D == 2) {
-    return spline.toPrimitives(ctx.material, 0);
+    ViewCullCount seen(ctx.view != nullptr);
+    std::vector<Primitive> prims = spline.toPrimitives(ctx.material, 0, ctx.view, &seen);
+    ctx.note = seen.note();
+    return prims;
   } else {
     const auto start = std::chrono::steady_clock::now();
     SimplexSpline3::CellStats st;

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
+
+#include "modeling/splines/height_field_bound.h"
 
 namespace qacc {
 namespace {
@@ -88,7 +91,7 @@ bool segmentCrosses(const WorkCell& c, const Vec& p, const Vec& q, double eps) {
 
 }  // namespace
 
-std::vector<SimplexSpline2::Cell> SimplexSpline2::cells() const {
+std::vector<SimplexSpline2::Cell> SimplexSpline2::cells(const ViewVolume* view, ViewCullCount* count) const {
   // Segments between knots that occur together in a knot set.
   std::set<std::array<double, 4>> segs;
   const auto betas = multiIndices(n_);
@@ -174,7 +177,22 @@ std::vector<SimplexSpline2::Cell> SimplexSpline2::cells() const {
   std::vector<WorkCell> split;
   split.reserve(work.size() * 4);
   std::vector<std::size_t> near;
+  std::optional<HeightFieldBound> bound;
+  if (view) bound.emplace(*this);
+  std::vector<Eigen::Vector3d> prism;
   for (const WorkCell& triangle : work) {
+    if (view) {
+      // The triangle's prism over the range of F holds its surface (height_field_bound.h).
+      const HeightFieldBound::Range z = bound->over(triangle.poly);
+      prism.clear();
+      for (const Vec& v : triangle.poly) {
+        prism.emplace_back(v.x(), v.y(), z.lo);
+        prism.emplace_back(v.x(), v.y(), z.hi);
+      }
+      const bool mayBeSeen = view->mayContain(prism);
+      if (count) count->keep(mayBeSeen);
+      if (!mayBeSeen) continue;
+    }
     Eigen::AlignedBox2d box;
     for (const Vec& v : triangle.poly) box.extend(v);
     near.clear();
@@ -225,9 +243,10 @@ std::vector<SimplexSpline2::Cell> SimplexSpline2::cells() const {
   return out;
 }
 
-std::vector<Primitive> SimplexSpline2::toPrimitives(int material, int object) const {
+std::vector<Primitive> SimplexSpline2::toPrimitives(int material, int object, const ViewVolume* view,
+                                                    ViewCullCount* count) const {
   std::vector<Primitive> out;
-  for (const Cell& c : cells()) {
+  for (const Cell& c : cells(view, count)) {
     const Polynomial3& p = c.poly;
     // f = z - p(x, y): interior (f <= 0) below the height field.
     Primitive prim;

@@ -11,6 +11,11 @@
 // symbolically (λ_j are affine polynomials) at an interior point, and the cell is emitted
 // as the quadric z - p(x, y) = 0 clipped by the vertical planes of its edges (one plane per
 // line, built once; neighbours use its opposite()).
+//
+// View culling (`view`, loader/view_culling.h): a domain triangle (clipped to the display
+// domain) whose prism — the polygon x the range of F over it (height_field_bound.h) — misses
+// the view volume is not cut into cells; every other triangle is cut exactly as without a
+// view (a triangle's cells depend only on itself), so the cells kept are the unculled ones.
 #pragma once
 #include <array>
 #include <vector>
@@ -18,6 +23,8 @@
 #include <Eigen/Dense>
 
 #include "modeling/geometry/primitive.h"
+#include "modeling/loader/view_cull_count.h"
+#include "modeling/scene/view_volume.h"
 #include "modeling/splines/simplex_spline_base.h"
 
 namespace qacc {
@@ -38,10 +45,12 @@ class SimplexSpline2 : public SimplexSplineBase<2> {
     std::vector<HalfSpace> edges;       // vertical planes (z coefficient 0), keep the cell
     Polynomial3 poly;                   // F inside the cell
   };
-  // Convex cells covering the triangulation (∩ domain) where F is one polynomial.
-  std::vector<Cell> cells() const;
+  // Convex cells covering the triangulation (∩ domain) where F is one polynomial; with a
+  // view, only those of the triangles that may meet it (each triangle counted in `count`).
+  std::vector<Cell> cells(const ViewVolume* view = nullptr, ViewCullCount* count = nullptr) const;
   // Height-field primitives z = F(x, y): one quadric per cell, clipped by its edges.
-  std::vector<Primitive> toPrimitives(int material = 0, int object = 0) const;
+  std::vector<Primitive> toPrimitives(int material = 0, int object = 0, const ViewVolume* view = nullptr,
+                                      ViewCullCount* count = nullptr) const;
 };
 
 // Knot clouds for a triangulation (simplexKnotClouds<2>).

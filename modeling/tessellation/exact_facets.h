@@ -1,9 +1,12 @@
 // Facets of objects with an exact surface (exact_surface.h: algebraic surfaces, which the
 // reference ray-casts): they are tessellated from that surface, not from their quadric
 // pieces — the surface's own triangles (marching tetrahedra of the true surface), about
-// `triangles` per quadric piece of the object so that a level means the same budget as
-// for the pieces, or with `chord_error` the budget quadrupled from 64 per piece until the
-// sampled distance to the true surface is at most the bound (up to the finest marching grid).
+// `triangles` per cell of the object's model (SceneObject::model_cells: the algebraic
+// modeler's Kuhn tetrahedra at its level, whether or not view culling built them, so that
+// the mesh does not depend on the view the scene was culled for; the object's piece count
+// when the modeler gives no cells), or with `chord_error` the budget quadrupled from 64 per
+// cell until the sampled distance to the true surface is at most the bound (up to the
+// finest marching grid).
 #pragma once
 #include <cstddef>
 
@@ -13,7 +16,7 @@
 
 namespace qacc::tess {
 
-// The triangles of an object's exact surface, at the budget of `pieces` quadric pieces; with
+// The triangles of an object's exact surface, at the budget of `pieces` cells or pieces; with
 // options.pixel_error, the budget quadrupled until the measured distance to the surface
 // times the largest pixels per world unit over its bounds is at most the bound (`view`
 // required then).

@@ -362,7 +362,11 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
       // The object's true surface replaces its pieces, drawn once at its first piece.
       if (!exactFirst[i]) continue;
       const ExactSurface& surf = *scene.exact_surfaces[std::size_t(exactOf[i])];
-      ExactSurfaceMesh em = tess::tessellateExact(surf, scene.objects[std::size_t(p.object)].count, options, &view);
+      // Sized by the object's whole model when the modeler gave it, so that view culling
+      // (which lowers the pieces emitted) does not change the mesh.
+      const SceneObject& object = scene.objects[std::size_t(p.object)];
+      ExactSurfaceMesh em =
+          tess::tessellateExact(surf, object.model_cells > 0 ? object.model_cells : object.count, options, &view);
       if (options.pixel_error > 0) {
         const double s = view.maxPixelsPerUnit(surf.bounds());
         rep.max_pixel_error = std::max(rep.max_pixel_error, em.max_error * s);

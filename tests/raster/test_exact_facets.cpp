@@ -2,12 +2,15 @@
 // are tessellated from that surface by marching tetrahedra, not from their quadric pieces.
 // Checks: vertices on the true surface (after the object's placement and clip), normals
 // along its gradient, the triangle count grows with the level, other objects keep their
-// tessellation, and the facet image approaches the exact reference as the level rises.
+// tessellation, the mesh is sized by the object's whole model, so view culling does not change
+// it, and the facet image approaches the exact reference as the level rises.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "modeling/algebraic/algebraic_surface.h"
 #include "modeling/geometry/natural_quadrics.h"
@@ -158,8 +161,9 @@ TEST(ExactFacets, SceneTessellatesTheTrueSurfaceNotThePieces) {
     }
     EXPECT_EQ(rep.exact_triangles, torusTriangles);
     EXPECT_EQ(sphereTriangles, tessellatePrimitive(sphere, to, &scene.camera, 4.0 / 3.0).mesh.size());
-    // The budget is `level` triangles per quadric piece of the object.
-    const double budget = double(level) * double(scene.objects[0].count);
+    // The budget is `level` triangles per cell of the object's model (6 x 4^3 Kuhn cells).
+    ASSERT_EQ(scene.objects[0].model_cells, 384u);
+    const double budget = double(level) * double(scene.objects[0].model_cells);
     EXPECT_GT(double(torusTriangles), 0.6 * budget);
     EXPECT_LT(double(torusTriangles), 1.6 * budget);
     EXPECT_GT(torusTriangles, 3 * previous);
@@ -171,6 +175,32 @@ TEST(ExactFacets, SceneTessellatesTheTrueSurfaceNotThePieces) {
   tessellateScene(pieces, TessellationOptions(), &rep);
   EXPECT_EQ(rep.exact_surfaces, 0u);
   EXPECT_EQ(rep.primitives, pieces.primitives.size());
+}
+
+TEST(ExactFacets, MeshDoesNotDependOnViewCulling) {
+  // A zoomed view on part of the torus: culling keeps few of its pieces, and the mesh of its
+  // true surface is the one of the unculled scene, triangle for triangle.
+  nlohmann::json doc = nlohmann::json::parse(torusScene(""));
+  doc["camera"]["fov_y_deg"] = 6;
+  doc["camera"]["target"] = {1.0, 0.0, 0.2};
+  const Scene culled = parseScene(doc.dump(), "exact.json", ".");
+  const Scene unculled = parseScene(doc.dump(), "exact.json", ".", Limits{}, ViewCulling{false, 0, 0});
+  ASSERT_GT(culled.primitives.size(), 0u);
+  ASSERT_LT(2 * culled.primitives.size(), unculled.primitives.size());
+  for (const TessellationOptions& to : {TessellationOptions{6}, TessellationOptions{32}}) {
+    TessellationReport a, b;
+    const TriangleMesh3 ma = tessellateScene(culled, to, &a), mb = tessellateScene(unculled, to, &b);
+    EXPECT_EQ(a.exact_triangles, b.exact_triangles);
+    ASSERT_EQ(ma.size(), mb.size());
+    EXPECT_EQ(ma.positions, mb.positions);
+    EXPECT_EQ(ma.triangles, mb.triangles);
+  }
+  // By pixel error too (the budget quadrupled from 64 per cell until the bound holds).
+  TessellationOptions pe;
+  pe.pixel_error = 1.0;
+  TessellationReport a, b;
+  EXPECT_EQ(tessellateScene(culled, pe, &a).positions, tessellateScene(unculled, pe, &b).positions);
+  EXPECT_EQ(a.exact_grid, b.exact_grid);
 }
 
 TEST(ExactFacets, ChordErrorBoundRefinesTheTrueSurface) {

@@ -1,0 +1,168 @@
+// The range of a B-spline height field over a polygon (modeling/splines/height_field_bound.h)
+// and the view culling it drives (SimplexSpline2::cells with a view): with random control
+// values, every sampled value of F over a polygon, and of every cell's polynomial over its
+// closed polygon, lies inside the polygon's range — near the triangulation's boundary (no
+// display domain, where the basis is not a partition of unity) and inside it; and a view
+// drops only cells whose surface projects outside the image.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "modeling/splines/height_field_bound.h"
+#include "modeling/splines/simplex_spline2.h"
+
+using namespace qacc;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+namespace {
+
+struct Grid {
+  std::vector<Vector2d> v;
+  std::vector<std::array<int, 3>> t;
+};
+
+Grid grid(int n, double lo, double hi) {
+  Grid g;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) g.v.emplace_back(lo + (hi - lo) * i / n, lo + (hi - lo) * j / n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      g.t.push_back({a, b, d});
+      g.t.push_back({a, d, c});
+    }
+  return g;
+}
+
+// Random coefficients in [lo, hi].
+void randomise(SimplexSpline2& s, std::mt19937& rng, double lo, double hi) {
+  std::uniform_real_distribution<double> u(lo, hi);
+  std::vector<std::vector<double>> c(s.coefficients().size());
+  for (std::size_t t = 0; t < c.size(); ++t) {
+    c[t].resize(SimplexSpline2::multiIndices(s.degree()).size());
+    for (double& x : c[t]) x = u(rng);
+  }
+  s.setCoefficients(c);
+}
+
+// A random point of the closed convex polygon (a fan triangle from its first corner); with
+// `interior`, strictly inside.
+Vector2d pointIn(const std::vector<Vector2d>& poly, std::mt19937& rng, bool interior) {
+  std::uniform_real_distribution<double> u(interior ? 1e-6 : 0.0, interior ? 1 - 1e-6 : 1.0);
+  const std::size_t k = 1 + std::size_t(rng() % (poly.size() - 2));
+  double a = u(rng), b = u(rng);
+  if (a + b > 1) a = 1 - a, b = 1 - b;
+  return poly[0] + a * (poly[k] - poly[0]) + b * (poly[k + 1] - poly[0]);
+}
+
+bool inTriangle(const std::vector<Vector2d>& tri, const Vector2d& p) {
+  auto side = [](const Vector2d& a, const Vector2d& b, const Vector2d& q) {
+    return (b - a).x() * (q - a).y() - (b - a).y() * (q - a).x();
+  };
+  const double s0 = side(tri[0], tri[1], p), s1 = side(tri[1], tri[2], p), s2 = side(tri[2], tri[0], p);
+  return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+}
+
+}  // namespace
+
+TEST(HeightFieldBound, HoldsEverySampledValueOfRandomSplines) {
+  std::mt19937 rng(13);
+  int hull = 0, interval = 0, samples = 0;
+  for (bool g1 : {false, true})
+    for (bool domain : {false, true})
+      for (int trial = 0; trial < 3; ++trial) {
+        const Grid g = grid(4, -2, 2);
+        SimplexSpline2 s(2, g.v, g.t, knotClouds(g.v, g.t, 2, g1, 0.2));
+        if (domain) s.setDomain(Eigen::AlignedBox2d(Vector2d(-1.5, -1.5), Vector2d(1.5, 1.5)));
+        // Positive values show a sum of the basis below 1 near the boundary; mixed signs
+        // and a large offset the rest.
+        if (trial == 0) randomise(s, rng, 0.5, 1.5);
+        if (trial == 1) randomise(s, rng, -1.0, 1.0);
+        if (trial == 2) randomise(s, rng, 99.0, 101.0);
+        const HeightFieldBound bound(s);
+        const auto cells = s.cells();
+        for (const auto& t : s.triangles()) {
+          const std::vector<Vector2d> tri = {s.vertices()[std::size_t(t[0])], s.vertices()[std::size_t(t[1])],
+                                             s.vertices()[std::size_t(t[2])]};
+          const HeightFieldBound::Range r = bound.over(tri);
+          (r.convexHull ? hull : interval)++;
+          for (int k = 0; k < 50; ++k) {
+            const Vector2d p = pointIn(tri, rng, true);
+            const double f = s.eval(p);
+            ++samples;
+            ASSERT_GE(f, r.lo) << "g1 " << g1 << " trial " << trial << " at " << p.transpose();
+            ASSERT_LE(f, r.hi) << "g1 " << g1 << " trial " << trial << " at " << p.transpose();
+          }
+          // The cells inside the triangle: their polynomials over their closed polygons.
+          for (const auto& c : cells) {
+            Vector2d centre = Vector2d::Zero();
+            for (const Vector2d& v : c.polygon) centre += v / double(c.polygon.size());
+            if (!inTriangle(tri, centre)) continue;
+            for (int k = 0; k < 10; ++k) {
+              const Vector2d p = k < int(c.polygon.size()) ? c.polygon[std::size_t(k)] : pointIn(c.polygon, rng, false);
+              const double f = c.poly.eval(Vector3d(p.x(), p.y(), 0));
+              ++samples;
+              ASSERT_GE(f, r.lo) << "cell of g1 " << g1 << " trial " << trial << " at " << p.transpose();
+              ASSERT_LE(f, r.hi) << "cell of g1 " << g1 << " trial " << trial << " at " << p.transpose();
+            }
+            // And the cell's own polygon, a smaller one.
+            const HeightFieldBound::Range rc = bound.over(c.polygon);
+            for (int k = 0; k < 5; ++k) {
+              const Vector2d p = pointIn(c.polygon, rng, false);
+              const double f = c.poly.eval(Vector3d(p.x(), p.y(), 0));
+              ASSERT_GE(f, rc.lo);
+              ASSERT_LE(f, rc.hi);
+            }
+          }
+        }
+      }
+  // Both bounds were exercised: the convex hull inside, the intervals near the boundary.
+  EXPECT_GT(hull, 50);
+  EXPECT_GT(interval, 50);
+  std::printf("%d samples, %d triangles by the convex hull, %d by intervals\n", samples, hull, interval);
+}
+
+TEST(HeightFieldBound, ViewCullingDropsOnlyCellsOutsideTheImage) {
+  const Grid g = grid(6, -3, 3);
+  SimplexSpline2 s(2, g.v, g.t, knotClouds(g.v, g.t, 2, true, 0.2));
+  s.setDomain(Eigen::AlignedBox2d(Vector2d(-2, -2), Vector2d(2, 2)));
+  s.setCoefficients(s.grevilleCoefficients(Polynomial3::parse("0.35 (x^2 + y^2) - 0.025 (x^4 + y^4) + 0.2 x y")));
+  Camera cam;
+  cam.eye = Vector3d(4.4, -6.2, 5.0);
+  cam.target = Vector3d(0.5, 0.3, 0.2);
+  cam.up = Vector3d(0, 0, 1);
+  cam.fov_y_deg = 8;
+  cam.near = 0.5;
+  cam.far = 30;
+  const int w = 320, h = 240;
+  const ViewVolume view = ViewVolume::of(cam, w, h);
+  ViewCullCount count(true);
+  const auto all = s.cells();
+  const auto kept = s.cells(&view, &count);
+  EXPECT_EQ(count.pieces, 32u);  // the triangles that meet the domain [-2, 2]^2
+  EXPECT_GE(count.skipped, 5u);
+  EXPECT_LT(kept.size(), all.size());
+  // The kept cells are the unculled ones, in order; every dropped cell projects off the image.
+  const Eigen::Matrix4d M = cam.worldToWindow(w, h);
+  std::mt19937 rng(5);
+  std::size_t k = 0, dropped = 0;
+  for (const auto& c : all) {
+    if (k < kept.size() && kept[k].polygon == c.polygon) {
+      EXPECT_EQ(kept[k].poly.coefficient(2, 0, 0), c.poly.coefficient(2, 0, 0));
+      ++k;
+      continue;
+    }
+    ++dropped;
+    for (int i = 0; i < 200; ++i) {
+      const Vector2d p = pointIn(c.polygon, rng, false);
+      const Eigen::Vector4d q = M * Eigen::Vector4d(p.x(), p.y(), c.poly.eval(Vector3d(p.x(), p.y(), 0)), 1);
+      const bool onScreen = q.w() > 0 && q.x() / q.w() >= 0 && q.x() / q.w() <= w && q.y() / q.w() >= 0 &&
+                            q.y() / q.w() <= h && q.z() / q.w() >= 0 && q.z() / q.w() <= 1;
+      ASSERT_FALSE(onScreen) << "a dropped cell reaches the image at " << p.transpose();
+    }
+  }
+  EXPECT_EQ(k, kept.size());
+  EXPECT_GT(dropped, 0u);
+}
