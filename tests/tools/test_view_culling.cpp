@@ -128,6 +128,7 @@ TEST(ViewCulling, CulledScenesRenderAsTheUnculledOnesFromRandomViews) {
   const bool haveFacets = facetRendererAvailable();
   int scenes = 0, spuriousFacetViews = 0;
   for (const fs::path& path : shippedScenes()) {
+    if (leftOutOfSanitizedSweeps(path.stem().string())) continue;  // tests/sanitized_build.h
     SCOPED_TRACE(path.filename().string());
     const std::string text = readSceneText(path.string());
     nlohmann::json doc = nlohmann::json::parse(text);
@@ -194,7 +195,7 @@ TEST(ViewCulling, CulledScenesRenderAsTheUnculledOnesFromRandomViews) {
     std::fflush(stdout);
     ++scenes;
   }
-  EXPECT_GE(scenes, 21);
+  EXPECT_GE(scenes, kSanitizedBuild ? 20 : 21);  // one left out under the sanitizers
   std::printf("%d scenes x %d views (fewer in a sanitized build); facets views where culling removed only spurious facets: %d\n", scenes, kViews,
               spuriousFacetViews);
 }
