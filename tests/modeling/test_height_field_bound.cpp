@@ -11,30 +11,13 @@
 
 #include "modeling/splines/height_field_bound.h"
 #include "modeling/splines/simplex_spline2.h"
+#include "tests/modeling/triangle_grid.h"
 
 using namespace qacc;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
 namespace {
-
-struct Grid {
-  std::vector<Vector2d> v;
-  std::vector<std::array<int, 3>> t;
-};
-
-Grid grid(int n, double lo, double hi) {
-  Grid g;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) g.v.emplace_back(lo + (hi - lo) * i / n, lo + (hi - lo) * j / n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-      g.t.push_back({a, b, d});
-      g.t.push_back({a, d, c});
-    }
-  return g;
-}
 
 // Random coefficients in [lo, hi].
 void randomise(SimplexSpline2& s, std::mt19937& rng, double lo, double hi) {
@@ -73,7 +56,7 @@ TEST(HeightFieldBound, HoldsEverySampledValueOfRandomSplines) {
   for (bool g1 : {false, true})
     for (bool domain : {false, true})
       for (int trial = 0; trial < 3; ++trial) {
-        const Grid g = grid(4, -2, 2);
+        const TriangleGrid g = triangleGrid(4, -2, 2);
         SimplexSpline2 s(2, g.v, g.t, knotClouds(g.v, g.t, 2, g1, 0.2));
         if (domain) s.setDomain(Eigen::AlignedBox2d(Vector2d(-1.5, -1.5), Vector2d(1.5, 1.5)));
         // Positive values show a sum of the basis below 1 near the boundary; mixed signs
@@ -125,7 +108,7 @@ TEST(HeightFieldBound, HoldsEverySampledValueOfRandomSplines) {
 }
 
 TEST(HeightFieldBound, ViewCullingDropsOnlyCellsOutsideTheImage) {
-  const Grid g = grid(6, -3, 3);
+  const TriangleGrid g = triangleGrid(6, -3, 3);
   SimplexSpline2 s(2, g.v, g.t, knotClouds(g.v, g.t, 2, true, 0.2));
   s.setDomain(Eigen::AlignedBox2d(Vector2d(-2, -2), Vector2d(2, 2)));
   s.setCoefficients(s.grevilleCoefficients(Polynomial3::parse("0.35 (x^2 + y^2) - 0.025 (x^4 + y^4) + 0.2 x y")));

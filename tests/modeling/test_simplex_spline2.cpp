@@ -10,32 +10,15 @@
 #include "modeling/scene/scene_error.h"
 #include "modeling/loader/scene_loader.h"
 #include "modeling/splines/simplex_spline2.h"
+#include "tests/modeling/triangle_grid.h"
 
 using namespace qacc;
 using Eigen::Vector2d;
 
 namespace {
 
-struct Grid {
-  std::vector<Vector2d> v;
-  std::vector<std::array<int, 3>> t;
-};
-
-Grid grid(int n, double lo, double hi) {
-  Grid g;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) g.v.emplace_back(lo + (hi - lo) * i / n, lo + (hi - lo) * j / n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-      g.t.push_back({a, b, d});
-      g.t.push_back({a, d, c});
-    }
-  return g;
-}
-
 SimplexSpline2 makeSpline(bool g1) {
-  const Grid g = grid(4, -2, 2);
+  const TriangleGrid g = triangleGrid(4, -2, 2);
   SimplexSpline2 s(2, g.v, g.t, knotClouds(g.v, g.t, 2, g1, 0.2));
   if (g1) s.setDomain(Eigen::AlignedBox2d(Vector2d(-1, -1), Vector2d(1, 1)));
   return s;
