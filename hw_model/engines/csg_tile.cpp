@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "hw_model/datapath/clip_test.h"
 #include "hw_model/datapath/csg_interval_list.h"
@@ -61,8 +62,8 @@ void drawCsgTile(const CsgPixelTree& tree, const FrameSetup& fs, const HwConfig&
     thread_local std::vector<char> present;
     present.assign(tree.tree().nodes.size(), 0);
     for (int leaf : tree.leavesInTile(tileIndex)) present[std::size_t(tree.leafNode(leaf))] = 1;
-    const PrunedCsgTree pruned = pruneCsgTree(tree.tree(), present);
-    needed = pruned.kept;
+    PrunedCsgTree pruned = pruneCsgTree(tree.tree(), present);
+    needed = std::move(pruned.kept);
     cc.leaves_tested += std::uint64_t(tree.leafCount());
     cc.leaves_pruned += std::uint64_t(pruned.leavesPruned);
     cc.products_pruned += std::uint64_t(pruned.productsPruned);
