@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <unordered_map>
 
 #include "modeling/algebraic/marching_tetrahedra.h"
@@ -23,12 +22,24 @@ Eigen::AlignedBox3d surfaceBox(const Quadric& q, const Eigen::AlignedBox3d& box,
   constexpr int n = 40, block = 8;
   const Vector3d h = box.sizes() / n;
   Eigen::AlignedBox3d out;
-  std::vector<double> val(std::size_t(n + 1) * (n + 1) * (n + 1), std::numeric_limits<double>::quiet_NaN());
+  // The values found so far, per thread and kept across calls: a value is this call's when
+  // its stamp is this call's (no 41³ clear, no fresh pages, per call).
+  constexpr std::size_t points = std::size_t(n + 1) * (n + 1) * (n + 1);
+  thread_local std::vector<double> val(points);
+  thread_local std::vector<std::uint32_t> stamp(points, 0);
+  thread_local std::uint32_t call = 0;
+  if (++call == 0) {  // the stamps wrapped: start again
+    std::fill(stamp.begin(), stamp.end(), 0u);
+    call = 1;
+  }
   auto pt = [&](int i, int j, int k) { return Vector3d(box.min() + h.cwiseProduct(Vector3d(i, j, k))); };
   auto at = [&](int i, int j, int k) {
-    double& v = val[(std::size_t(k) * (n + 1) + j) * (n + 1) + i];
-    if (std::isnan(v)) v = q.eval(pt(i, j, k));
-    return v;
+    const std::size_t m = (std::size_t(k) * (n + 1) + j) * (n + 1) + i;
+    if (stamp[m] != call) {
+      val[m] = q.eval(pt(i, j, k));
+      stamp[m] = call;
+    }
+    return val[m];
   };
   // A quadric can dip between corners: allow a margin of one cell's curvature.
   const Matrix3d absA = q.Q.topLeftCorner<3, 3>().cwiseAbs();

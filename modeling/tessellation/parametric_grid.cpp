@@ -60,11 +60,20 @@ void emitGrid(SurfaceBuilder& sb, const Grid& g, double v0, double v1, const std
   }
   std::sort(vs.begin(), vs.end());
   vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
-  for (std::size_t j = 0; j + 1 < vs.size(); ++j)
-    for (int i = 0; i < g.nu; ++i) {
-      const double ua = kTwoPi * i / g.nu, ub = (i + 1 == g.nu) ? kTwoPi : kTwoPi * (i + 1) / g.nu;
-      sb.addQuad(Vector3d(ua, vs[j], 0), Vector3d(ub, vs[j], 0), Vector3d(ub, vs[j + 1], 0), Vector3d(ua, vs[j + 1], 0));
-    }
+  // The grid's vertices, row by row (u = 2π closes a row: its own column), each made once
+  // for the quads around it.
+  const std::size_t columns = std::size_t(g.nu) + 1;
+  auto row = [&](double v, std::vector<ClipVertex>& out) {
+    out.clear();
+    for (int i = 0; i <= g.nu; ++i) out.push_back(sb.vertex(Vector3d(i == g.nu ? kTwoPi : kTwoPi * i / g.nu, v, 0)));
+  };
+  std::vector<ClipVertex> lower, upper;
+  if (!vs.empty()) row(vs[0], upper);
+  for (std::size_t j = 0; j + 1 < vs.size(); ++j) {
+    lower.swap(upper);
+    row(vs[j + 1], upper);
+    for (std::size_t i = 0; i + 1 < columns; ++i) sb.addQuad(lower[i], lower[i + 1], upper[i + 1], upper[i]);
+  }
 }
 
 GridChooser gridByTarget(QuadricType type, int target) {

@@ -34,24 +34,27 @@ struct SurfaceBuilder {
   TriangleMesh3& mesh;
   CapSegments& caps;
 
-  Vector3d normalAt(const Vector3d& coord, const Vector3d& towards) const {
-    const Vector3d p = domain.position(coord);
+  // Working polygons of addPolygon, kept across calls (one allocation per builder).
+  Polygon poly_{}, scratch_{};
+
+  Vector3d normalAt(const ClipVertex& v, const Vector3d& towards) const {
+    const Vector3d& p = v.pos;
     Vector3d g = q.gradient(p);
     const double scale = 1.0 + p.norm();
     if (!(g.norm() > 1e-9 * scale)) {  // singular point (cone apex): step into the triangle
-      g = q.gradient(domain.position(coord + 1e-4 * (towards - coord)));
+      g = q.gradient(domain.position(v.coord + 1e-4 * (towards - v.coord)));
     }
     const double n = g.norm();
     return n > 0 ? Vector3d(g / n) : Vector3d(0, 0, 1);
   }
 
   void emit(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
-    const Vector3d pa = domain.position(a.coord), pb = domain.position(b.coord), pc = domain.position(c.coord);
+    const Vector3d &pa = a.pos, &pb = b.pos, &pc = c.pos;
     if (pa == pb || pb == pc || pa == pc) return;
     const Vector3d fn = (pb - pa).cross(pc - pa);
     if (!(fn.norm() > 0)) return;
     const Vector3d centre = (a.coord + b.coord + c.coord) / 3.0;
-    Vector3d na = normalAt(a.coord, centre), nb = normalAt(b.coord, centre), nc = normalAt(c.coord, centre);
+    Vector3d na = normalAt(a, centre), nb = normalAt(b, centre), nc = normalAt(c, centre);
     const int base = int(mesh.positions.size());
     if (fn.dot(na + nb + nc) >= 0) {
       mesh.positions.insert(mesh.positions.end(), {pa, pb, pc});
@@ -63,8 +66,7 @@ struct SurfaceBuilder {
     mesh.triangles.push_back({base, base + 1, base + 2});
   }
 
-  unsigned onPlanes(const Vector3d& coord) const {  // grid vertices that lie on clip planes
-    const Vector3d p = domain.position(coord);
+  unsigned onPlanes(const Vector3d& p) const {  // grid vertices (world position p) that lie on clip planes
     unsigned t = 0;
     for (std::size_t k = 0; k < planes.size() && k < 32; ++k) {
       const double g = planes[k].eval(p);
@@ -74,35 +76,56 @@ struct SurfaceBuilder {
     return t;
   }
 
-  void addTriangle(const Vector3d& a, const Vector3d& b, const Vector3d& c) { addPolygon({a, b, c}); }
+  void addTriangle(const Vector3d& a, const Vector3d& b, const Vector3d& c) {
+    const Vector3d corners[3] = {a, b, c};
+    addPolygon(corners, 3);
+  }
+
+  void addPolygon(const std::vector<Vector3d>& corners) { addPolygon(corners.data(), corners.size()); }
+
+  // A domain point as a polygon vertex: its world position and the clip planes it lies on.
+  ClipVertex vertex(const Vector3d& coord) const {
+    const Vector3d p = domain.position(coord);
+    return {coord, p, onPlanes(p)};
+  }
 
   // A convex domain polygon, clipped as a whole then fanned.
-  void addPolygon(const std::vector<Vector3d>& corners) {
-    Polygon in;
-    for (const auto& x : corners) in.push_back({x, onPlanes(x)});
-    const Polygon poly = clipPolygon(in, domain, planes);
+  void addPolygon(const Vector3d* corners, std::size_t n) {
+    poly_.clear();
+    for (std::size_t i = 0; i < n; ++i) poly_.push_back(vertex(corners[i]));
+    clipAndEmit();
+  }
+  // The same from vertices made by vertex() (a grid's, made once for the polygons around them).
+  void addPolygon(const ClipVertex* corners, std::size_t n) {
+    poly_.assign(corners, corners + n);
+    clipAndEmit();
+  }
+
+  // poly_ clipped, fanned into triangles, and its edges on cap planes kept.
+  void clipAndEmit() {
+    Polygon& poly = poly_;
+    clipPolygon(poly, scratch_, domain, planes);
     if (poly.empty()) return;
     for (std::size_t i = 1; i + 1 < poly.size(); ++i) emit(poly[0], poly[i], poly[i + 1]);
     if (cap_planes == 0) return;
     // Orientation of the polygon against the outward normal (Newell normal vs gradient).
     Vector3d newell = Vector3d::Zero(), grad = Vector3d::Zero();
-    std::vector<Vector3d> P(poly.size());
-    for (std::size_t i = 0; i < poly.size(); ++i) P[i] = domain.position(poly[i].coord);
     for (std::size_t i = 0; i < poly.size(); ++i) {
-      newell += P[i].cross(P[(i + 1) % poly.size()]);
-      grad += q.gradient(P[i]);
+      newell += poly[i].pos.cross(poly[(i + 1) % poly.size()].pos);
+      grad += q.gradient(poly[i].pos);
     }
     const bool outward = newell.dot(grad) >= 0;
     for (std::size_t i = 0; i < poly.size(); ++i) {
       const std::size_t j = (i + 1) % poly.size();
       const unsigned common = poly[i].tags & poly[j].tags;
       if (!common || (common & (common - 1))) continue;  // on no plane, or along a plane-plane line
-      if (P[i] == P[j]) continue;
+      const Vector3d &Pi = poly[i].pos, &Pj = poly[j].pos;
+      if (Pi == Pj) continue;
       for (std::size_t k = 0; k < cap_planes && k < 32; ++k) {
         if (common != (1u << k)) continue;
         // The cap runs the shared edge the other way round.
-        if (outward) caps.per_plane[k].push_back({P[j], P[i], poly[j].tags, poly[i].tags});
-        else caps.per_plane[k].push_back({P[i], P[j], poly[i].tags, poly[j].tags});
+        if (outward) caps.per_plane[k].push_back({Pj, Pi, poly[j].tags, poly[i].tags});
+        else caps.per_plane[k].push_back({Pi, Pj, poly[i].tags, poly[j].tags});
       }
     }
   }
@@ -110,6 +133,11 @@ struct SurfaceBuilder {
   void addQuad(const Vector3d& a, const Vector3d& b, const Vector3d& c, const Vector3d& d) {
     addTriangle(a, b, c);
     addTriangle(a, c, d);
+  }
+  void addQuad(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, const ClipVertex& d) {
+    const ClipVertex abc[3] = {a, b, c}, acd[3] = {a, c, d};
+    addPolygon(abc, 3);
+    addPolygon(acd, 3);
   }
 };
 

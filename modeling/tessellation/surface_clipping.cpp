@@ -49,28 +49,36 @@ Vector3d Domain::ontoCorner(const Vector3d& x, const HalfSpace& h1, const HalfSp
   return x + s * e;
 }
 
-Polygon clipPolygon(const Polygon& in, const Domain& d, const std::vector<HalfSpace>& planes) {
-  Polygon poly = in;
-  std::vector<char> kept;  // reused across the planes
-  Polygon out;
+void clipPolygon(Polygon& poly, Polygon& out, const Domain& d, const std::vector<HalfSpace>& planes) {
+  // Per vertex of the current polygon: kept by the current plane. At most 32 + planes
+  // vertices (each plane adds at most one), so a fixed buffer past 64 is never needed.
+  std::vector<char> keptHeap;
+  char keptLocal[64];
   for (std::size_t k = 0; k < planes.size() && !poly.empty(); ++k) {
     const unsigned bit = k < 32 ? (1u << k) : 0u;
-    kept.assign(poly.size(), 0);
+    char* kept = keptLocal;
+    if (poly.size() > sizeof keptLocal) {
+      keptHeap.assign(poly.size(), 0);
+      kept = keptHeap.data();
+    }
     bool all = true, none = true;
     for (std::size_t i = 0; i < poly.size(); ++i) {
-      kept[i] = (poly[i].tags & bit) ? 1 : char(planes[k].keeps(planes[k].eval(d.position(poly[i].coord))));
+      kept[i] = (poly[i].tags & bit) ? 1 : char(planes[k].keeps(planes[k].eval(poly[i].pos)));
       all = all && kept[i];
       none = none && !kept[i];
     }
     if (all) continue;
-    if (none) return {};
+    if (none) {
+      poly.clear();
+      return;
+    }
     out.clear();
     for (std::size_t i = 0; i < poly.size(); ++i) {
       const std::size_t j = (i + 1) % poly.size();
       if (kept[i]) out.push_back(poly[i]);
       if (kept[i] != kept[j]) {
         ClipVertex v;
-        v.coord = d.cut(poly[i].coord, poly[j].coord, planes[k]);
+        v.coord = d.cut(poly[i].coord, poly[j].coord, poly[i].pos, poly[j].pos, planes[k]);
         v.tags = (poly[i].tags & poly[j].tags) | bit;
         if (d.linear && d.surface) {  // onto the surface: along the plane, or a corner's line
           const double reach = (poly[j].coord - poly[i].coord).norm();
@@ -87,12 +95,13 @@ Polygon clipPolygon(const Polygon& in, const Domain& d, const std::vector<HalfSp
               break;
             }
         }
+        v.pos = d.position(v.coord);
         out.push_back(v);
       }
     }
     poly.swap(out);
   }
-  return poly.size() >= 3 ? poly : Polygon{};
+  if (poly.size() < 3) poly.clear();
 }
 
 }  // namespace qacc::tess

@@ -17,9 +17,11 @@ namespace qacc::tess {
 using Eigen::Vector2d;
 
 // Polygon clipping with plane tags. A vertex carries its domain coordinate (parameters
-// (u, v, 0) or a 3-D point) and a bit mask of the clip planes it lies on.
+// (u, v, 0) or a 3-D point), its world position (Domain::position of coord, computed once)
+// and a bit mask of the clip planes it lies on.
 struct ClipVertex {
   Vector3d coord;
+  Vector3d pos;
   unsigned tags = 0;
 };
 using Polygon = std::vector<ClipVertex>;
@@ -47,9 +49,13 @@ struct Domain {
   // of a quadratic); x unchanged when there is none within `reach`.
   Vector3d ontoCorner(const Vector3d& x, const HalfSpace& h1, const HalfSpace& h2, double reach) const;
 
-  Vector3d cut(Vector3d a, Vector3d b, const HalfSpace& h) const {
-    if (lexLess(b, a)) std::swap(a, b);  // the same edge always gives the same point
-    const double ga = h.eval(position(a)), gb = h.eval(position(b));
+  // The cut of the domain segment a b (world positions pa, pb) by h.
+  Vector3d cut(Vector3d a, Vector3d b, Vector3d pa, Vector3d pb, const HalfSpace& h) const {
+    if (lexLess(b, a)) {  // the same edge always gives the same point
+      std::swap(a, b);
+      std::swap(pa, pb);
+    }
+    const double ga = h.eval(pa), gb = h.eval(pb);
     if (linear) {
       const double t = ga / (ga - gb);
       return a + std::clamp(t, 0.0, 1.0) * (b - a);
@@ -88,8 +94,9 @@ struct Domain {
   }
 };
 
-// The polygon kept by all of `planes` (empty when fewer than 3 vertices remain). Vertices
-// already tagged as lying on a plane are kept by it.
-Polygon clipPolygon(const Polygon& in, const Domain& d, const std::vector<HalfSpace>& planes);
+// `poly` replaced by the polygon kept by all of `planes` (emptied when fewer than 3 vertices
+// remain). Vertices already tagged as lying on a plane are kept by it. `scratch` is working
+// space, passed in so that a builder clipping many polygons allocates once.
+void clipPolygon(Polygon& poly, Polygon& scratch, const Domain& d, const std::vector<HalfSpace>& planes);
 
 }  // namespace qacc::tess

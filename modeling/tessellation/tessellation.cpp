@@ -107,7 +107,7 @@ GridChooser gridChooser(const Level& lv, QuadricType type, const Domain& domain,
 }
 
 PrimitiveTessellation tessellateOnce(const Primitive& prim, const Level& lv, const Camera* camera, double aspect,
-                                     int chordSamples, bool forceMarching = false) {
+                                     bool forceMarching = false) {
   PrimitiveTessellation out;
   const Quadric q = prim.quadric.normalized();
   // QuadricType::All has no parametric branch: it selects marching tetrahedra over the region.
@@ -149,15 +149,21 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, const Level& lv, con
   addCaps(caps, capPlanes, region.planes, q, out.mesh);
   out.cap_triangles = out.mesh.size() - out.surface_triangles;
   if (out.mesh.size() == 0) out.method = TessellationMethod::Empty;
-  const ChordError ce = measureChordError(out.mesh, prim.quadric, 0, out.surface_triangles, chordSamples);
-  out.max_chord_error = ce.max;
-  out.mean_chord_error = ce.mean;
-  if (lv.view) {
-    const PixelError pe = measurePixelError(out.mesh, prim.quadric, *lv.view, 0, out.surface_triangles, chordSamples);
-    out.max_pixel_error = pe.max;
-    out.mean_pixel_error = pe.mean;
-  }
   return out;
+}
+
+// The chord error (and with a view the pixel error) of the tessellation that is kept: the
+// choices between tries (tessellateReaching, tessellateCovering) read their triangles, reach
+// and boundary defects only, so the errors are measured once, on the one returned.
+void measureErrors(PrimitiveTessellation& t, const Primitive& prim, const Level& lv, int chordSamples) {
+  const ChordError ce = measureChordError(t.mesh, prim.quadric, 0, t.surface_triangles, chordSamples);
+  t.max_chord_error = ce.max;
+  t.mean_chord_error = ce.mean;
+  if (lv.view) {
+    const PixelError pe = measurePixelError(t.mesh, prim.quadric, *lv.view, 0, t.surface_triangles, chordSamples);
+    t.max_pixel_error = pe.max;
+    t.mean_pixel_error = pe.mean;
+  }
 }
 
 // Whether the mesh reaches the piece's exact extent in every direction (within `tol`).
@@ -175,14 +181,13 @@ bool reachesBounds(const TriangleMesh3& mesh, const Eigen::AlignedBox3d& bounds,
 // kept. To a pixel error: when the mesh of a bounded clipped piece falls short of the
 // piece's exact extent (primitive_bounds.h) by more than 2ε pixels, the grid is refined
 // (x2, up to three times), then marching tetrahedra is tried and kept if it reaches further.
-PrimitiveTessellation tessellateReaching(const Primitive& prim, const Level& lv, const Camera* camera, double aspect,
-                                         int chordSamples) {
-  PrimitiveTessellation t = tessellateOnce(prim, lv, camera, aspect, chordSamples);
+PrimitiveTessellation tessellateReaching(const Primitive& prim, const Level& lv, const Camera* camera, double aspect) {
+  PrimitiveTessellation t = tessellateOnce(prim, lv, camera, aspect);
   const bool parametric = t.method == TessellationMethod::Parametric || t.method == TessellationMethod::Empty;
   if (prim.clip.empty() || prim.isPlanar() || !parametric) return t;
   if (!lv.view) {
     if (4 * t.surface_triangles < std::size_t(lv.target)) {
-      PrimitiveTessellation m = tessellateOnce(prim, lv, camera, aspect, chordSamples, true);
+      PrimitiveTessellation m = tessellateOnce(prim, lv, camera, aspect, true);
       if (m.surface_triangles > t.surface_triangles) return m;
     }
     return t;
@@ -194,10 +199,10 @@ PrimitiveTessellation tessellateReaching(const Primitive& prim, const Level& lv,
   for (int round = 0; round < 3 && !reachesBounds(t.mesh, box, tol); ++round) {
     finer.scale *= 2;
     if (2.0 * t.mesh.size() > lv.max_triangles) break;
-    t = tessellateOnce(prim, finer, camera, aspect, chordSamples);
+    t = tessellateOnce(prim, finer, camera, aspect);
   }
   if (!reachesBounds(t.mesh, box, tol)) {
-    PrimitiveTessellation m = tessellateOnce(prim, lv, camera, aspect, chordSamples, true);
+    PrimitiveTessellation m = tessellateOnce(prim, lv, camera, aspect, true);
     if (reachesBounds(m.mesh, box, tol) || m.surface_triangles > t.surface_triangles) return m;
   }
   return t;
@@ -207,21 +212,28 @@ PrimitiveTessellation tessellateReaching(const Primitive& prim, const Level& lv,
 // (piece_boundary.h: vertices outside a plane, open edges off the planes) gets a finer grid
 // (x2, twice), then marching tetrahedra over its region; the first proper mesh is kept, or
 // else the one with the fewest defects.
-PrimitiveTessellation tessellateCovering(const Primitive& prim, const Level& lv, const Camera* camera, double aspect,
-                                         int chordSamples) {
-  PrimitiveTessellation t = tessellateReaching(prim, lv, camera, aspect, chordSamples);
+PrimitiveTessellation coveringTry(const Primitive& prim, const Level& lv, const Camera* camera, double aspect) {
+  PrimitiveTessellation t = tessellateReaching(prim, lv, camera, aspect);
   if (t.boundary_defects == 0 || t.method != TessellationMethod::Parametric) return t;
   Level finer = lv;
   for (int round = 0; round < 2; ++round) {
     finer.scale *= 2;
     finer.target *= 4;
     if (finer.target > lv.max_triangles || 2.0 * t.mesh.size() > lv.max_triangles) break;
-    PrimitiveTessellation f = tessellateReaching(prim, finer, camera, aspect, chordSamples);
+    PrimitiveTessellation f = tessellateReaching(prim, finer, camera, aspect);
     if (f.boundary_defects < t.boundary_defects) t = std::move(f);
     if (t.boundary_defects == 0) return t;
   }
-  PrimitiveTessellation m = tessellateOnce(prim, lv, camera, aspect, chordSamples, true);
+  PrimitiveTessellation m = tessellateOnce(prim, lv, camera, aspect, true);
   if (m.boundary_defects < t.boundary_defects && m.method != TessellationMethod::Empty) return m;
+  return t;
+}
+
+// coveringTry, its errors measured.
+PrimitiveTessellation tessellateCovering(const Primitive& prim, const Level& lv, const Camera* camera, double aspect,
+                                         int chordSamples) {
+  PrimitiveTessellation t = coveringTry(prim, lv, camera, aspect);
+  measureErrors(t, prim, lv, chordSamples);
   return t;
 }
 
@@ -251,7 +263,9 @@ PrimitiveTessellation tessellateToPixels(const Primitive& prim, const Tessellati
   if (bounds.empty || (bounds.bounded && !view.boxOnScreen(bounds.box, 2.0))) {
     Level coarse;
     coarse.target = 8;
-    return tessellateOnce(prim, coarse, camera, aspect, options.chord_samples);
+    PrimitiveTessellation t = tessellateOnce(prim, coarse, camera, aspect);
+    measureErrors(t, prim, coarse, options.chord_samples);
+    return t;
   }
   Level lv;
   lv.view = &view;
@@ -353,9 +367,12 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
     }
   tess::stitchSharedBoundaries(scene.primitives, meshes, surface);
 
-  TriangleMesh3 all;
+  // The report in scene order (its means are sums in that order), the exact surfaces' meshes
+  // made in that order too (into their first piece's slot); then every mesh is copied into
+  // its own slice of the scene's arrays, in parallel, and released.
   double meanSum = 0, pixelMeanSum = 0;
   std::size_t measured = 0;
+  std::vector<bool> kept(n, false);
   for (std::size_t i = 0; i < n; ++i) {
     const Primitive& p = scene.primitives[i];
     if (exactOf[i] >= 0) {
@@ -374,9 +391,8 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
       }
       const int grid = em.grid;
       const double maxError = em.max_error, meanError = em.mean_error;
-      const TriangleMesh3 t = tess::exactSurfaceFacets(std::move(em), p.object, p.material, int(i));
+      TriangleMesh3 t = tess::exactSurfaceFacets(std::move(em), p.object, p.material, int(i));
       count(t.size());
-      all.append(t);
       ++rep.exact_surfaces;
       rep.exact_triangles += t.size();
       rep.triangles += t.size();
@@ -384,16 +400,14 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
       rep.max_chord_error = std::max(rep.max_chord_error, maxError);
       meanSum += meanError;
       ++measured;
+      pieces[i].mesh = std::move(t);
+      kept[i] = true;
       continue;
     }
     PrimitiveTessellation& t = pieces[i];
     const std::size_t count = t.mesh.size();
     t.cap_triangles = count - surface[i];
     t.surface_triangles = surface[i];
-    t.mesh.object.assign(count, p.object);
-    t.mesh.material.assign(count, p.material);
-    t.mesh.primitive.assign(count, int(i));
-    all.append(t.mesh);
     ++rep.primitives;
     rep.triangles += count;
     rep.cap_triangles += t.cap_triangles;
@@ -408,7 +422,45 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
     rep.max_pixel_error = std::max(rep.max_pixel_error, t.max_pixel_error);
     pixelMeanSum += t.mean_pixel_error;
     ++measured;
-    t.mesh = TriangleMesh3();  // appended: release it
+    kept[i] = true;
+  }
+  // Where each kept mesh goes: what TriangleMesh3::append in scene order would give.
+  std::vector<std::size_t> vertexAt(n + 1, 0), normalAt(n + 1, 0), triangleAt(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const TriangleMesh3& m = pieces[i].mesh;
+    const bool k = kept[i];
+    vertexAt[i + 1] = vertexAt[i] + (k ? m.positions.size() : 0);
+    normalAt[i + 1] = normalAt[i] + (k ? m.normals.size() : 0);
+    triangleAt[i + 1] = triangleAt[i] + (k ? m.triangles.size() : 0);
+  }
+  TriangleMesh3 all;
+  all.positions.resize(vertexAt[n]);
+  all.normals.resize(normalAt[n]);
+  all.triangles.resize(triangleAt[n]);
+  all.object.resize(triangleAt[n]);
+  all.material.resize(triangleAt[n]);
+  all.primitive.resize(triangleAt[n]);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (long li = 0; li < long(n); ++li) {
+    const std::size_t i = std::size_t(li);
+    if (!kept[i]) continue;
+    TriangleMesh3& m = pieces[i].mesh;
+    std::copy(m.positions.begin(), m.positions.end(), all.positions.begin() + std::ptrdiff_t(vertexAt[i]));
+    std::copy(m.normals.begin(), m.normals.end(), all.normals.begin() + std::ptrdiff_t(normalAt[i]));
+    const int base = int(vertexAt[i]);
+    const std::size_t t0 = triangleAt[i];
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      const auto& tri = m.triangles[t];
+      all.triangles[t0 + t] = {tri[0] + base, tri[1] + base, tri[2] + base};
+    }
+    const Primitive& p = scene.primitives[i];
+    const bool exact = exactOf[i] >= 0;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      all.object[t0 + t] = exact ? m.object[t] : p.object;
+      all.material[t0 + t] = exact ? m.material[t] : p.material;
+      all.primitive[t0 + t] = exact ? m.primitive[t] : int(i);
+    }
+    m = TriangleMesh3();  // copied: release it
   }
   rep.mean_chord_error = measured ? meanSum / double(measured) : 0.0;
   rep.mean_pixel_error = measured ? pixelMeanSum / double(measured) : 0.0;

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include <omp.h>
+
 #include "raster/osmesa/facet_csg_draw.h"
 #ifdef QACC_HAVE_OPENCSG
 #include "raster/osmesa/opencsg_glew.h"
@@ -240,7 +242,9 @@ struct VertexArrays {
   std::vector<GLfloat> pos, nor, col, spec, idc;
 };
 
-VertexArrays vertexArrays(const Scene& scene, const TriangleMesh3& mesh, bool gouraud) {
+// Triangles in parallel (each writes its own three vertices: the arrays do not depend on the
+// thread count).
+VertexArrays vertexArrays(const Scene& scene, const TriangleMesh3& mesh, bool gouraud, int threads) {
   VertexArrays va;
   const std::size_t nv = mesh.triangles.size() * 3;
   va.count = nv;
@@ -249,7 +253,10 @@ VertexArrays vertexArrays(const Scene& scene, const TriangleMesh3& mesh, bool go
   va.col.resize(nv * 3);
   va.spec.resize(nv * 2);
   va.idc.resize(nv * 3);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+  const long triangles = long(mesh.triangles.size());
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+  for (long ti = 0; ti < triangles; ++ti) {
+    const std::size_t t = std::size_t(ti);
     const int mi = t < mesh.material.size() ? mesh.material[t] : 0;
     const Material& m = scene.materials[std::size_t(mi) < scene.materials.size() ? std::size_t(mi) : 0];
     const std::uint32_t id = t < mesh.primitive.size() ? std::uint32_t(mesh.primitive[t] + 1) : 1u;
@@ -428,7 +435,7 @@ FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, co
     prog = perPixelProgram(api, apiLoaded, res.note);
     if (prog) res.shading_used = FacetShading::PerPixel;
   }
-  const VertexArrays va = vertexArrays(scene, mesh, res.shading_used == FacetShading::Gouraud);
+  const VertexArrays va = vertexArrays(scene, mesh, res.shading_used == FacetShading::Gouraud, options.threads);
   FacetCsgDrawPtr csg;
   if (!scene.csg_trees.empty()) {
 #ifdef QACC_HAVE_OPENCSG

@@ -3,8 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+
+#include <omp.h>
 
 #include "modeling/geometry/natural_quadrics.h"
+#include "modeling/loader/scene_loader.h"
 #include "modeling/tessellation/tessellation.h"
 
 using namespace qacc;
@@ -181,4 +185,39 @@ TEST(Tessellation, UnboundedPiecesLimitedToFrustum) {
   const PrimitiveTessellation t = tessellatePrimitive(plane, TessellationOptions(), &cam, 4.0 / 3.0);
   EXPECT_GE(t.mesh.size(), 2u);
   for (const auto& v : t.mesh.positions) EXPECT_NEAR(v.y(), -1.0, 1e-9);
+}
+
+// A scene's mesh is assembled in parallel from its pieces (each copied into its own slice):
+// the same arrays, in scene order, and the same report for any thread count — pieces with
+// shared boundaries (macropatch_g1) and an exact surface drawn at its first piece (torus).
+TEST(Tessellation, SceneMeshIdenticalForAnyThreadCount) {
+  for (const char* name : {"macropatch_g1.json", "torus.json"}) {
+    const Scene s = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/" + name);
+    TessellationOptions o;
+    o.triangles = 16;
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(1);
+    TessellationReport r1, r3;
+    const TriangleMesh3 m1 = tessellateScene(s, o, &r1);
+    omp_set_num_threads(3);
+    const TriangleMesh3 m3 = tessellateScene(s, o, &r3);
+    omp_set_num_threads(before);
+    ASSERT_GT(m1.size(), 0u) << name;
+    EXPECT_TRUE(m1.positions == m3.positions) << name;
+    EXPECT_TRUE(m1.normals == m3.normals) << name;
+    EXPECT_TRUE(m1.triangles == m3.triangles) << name;
+    EXPECT_TRUE(m1.object == m3.object && m1.material == m3.material && m1.primitive == m3.primitive) << name;
+    EXPECT_EQ(r1.triangles, r3.triangles) << name;
+    EXPECT_EQ(r1.max_chord_error, r3.max_chord_error) << name;
+    // An exact surface's mean error is an OpenMP sum (marching_tetrahedra.cpp): equal up to
+    // its order.
+    EXPECT_NEAR(r1.mean_chord_error, r3.mean_chord_error, 1e-12 * r1.mean_chord_error) << name;
+    // Every triangle's ids are its primitive's (or, for an exact surface, its first piece's).
+    for (std::size_t t = 0; t < m1.size(); ++t) {
+      const int p = m1.primitive[t];
+      ASSERT_TRUE(p >= 0 && std::size_t(p) < s.primitives.size()) << name;
+      ASSERT_EQ(m1.object[t], s.primitives[std::size_t(p)].object) << name;
+      ASSERT_EQ(m1.material[t], s.primitives[std::size_t(p)].material) << name;
+    }
+  }
 }
