@@ -107,7 +107,10 @@ void marchQuadricBox(SurfaceBuilder& sb, const Quadric& q, const Eigen::AlignedB
   Eigen::Vector3i dims;
   for (int a = 0; a < 3; ++a) dims[a] = std::max(1, int(std::ceil(box.sizes()[a] / h - 1e-9)));
   auto point = [&](const Eigen::Vector3i& c) { return Vector3d(box.min() + h * c.cast<double>()); };
-  std::vector<double> val(std::size_t((dims[0] + 1)) * (dims[1] + 1) * (dims[2] + 1));
+  // The grid's values and the edge points, per thread and kept across calls (a piece's
+  // marching makes no large allocation once its thread has marched a piece as large).
+  thread_local std::vector<double> val;
+  val.resize(std::size_t((dims[0] + 1)) * (dims[1] + 1) * (dims[2] + 1));
   std::size_t at = 0;
   for (int k = 0; k <= dims[2]; ++k)
     for (int j = 0; j <= dims[1]; ++j)
@@ -116,7 +119,8 @@ void marchQuadricBox(SurfaceBuilder& sb, const Quadric& q, const Eigen::AlignedB
         if (v == 0) v = 1e-300;  // grid points never exactly on the surface
         val[at++] = v;
       }
-  std::unordered_map<std::uint64_t, Vector3d> edgeCache;
+  thread_local std::unordered_map<std::uint64_t, Vector3d> edgeCache;
+  edgeCache.clear();
   const std::uint64_t npoints = val.size();
   auto E = [&](const KuhnEdge& e) {
     const std::uint64_t key = std::uint64_t(e.ia) * npoints + std::uint64_t(e.ib);  // exact pair key

@@ -21,8 +21,7 @@ bool onPlaneWithinRounding(const HalfSpace& h, const Eigen::Vector3d& x) {
 PieceBoundary checkPieceBoundary(const TriangleMesh3& mesh, std::size_t surface, const std::vector<HalfSpace>& planes) {
   PieceBoundary out;
   TriangleMesh3 own;
-  own.positions = mesh.positions;
-  own.normals = mesh.normals;
+  own.positions = mesh.positions;  // edgeUse reads positions and triangles only
   own.triangles.assign(mesh.triangles.begin(), mesh.triangles.begin() + std::ptrdiff_t(std::min(surface, mesh.size())));
   std::vector<bool> used(mesh.positions.size(), false);
   for (const auto& t : own.triangles)

@@ -224,11 +224,16 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
   //    computed from different vertex triples) become one position, that of the lowest
   //    primitive — over all shared planes at once, so that a vertex on several of them
   //    moves to one place.
+  // Each group's edges are collected in parallel (a group reads the meshes and writes only its
+  // own sides), then used in the groups' order.
+  auto collectAll = [&] {
+#pragma omp parallel for schedule(dynamic, 16)
+    for (long g = 0; g < long(shared.size()); ++g) collect(*shared[std::size_t(g)]);
+  };
+  collectAll();
   std::vector<std::pair<int, Vector3d>> pts;
-  for (Group* g : shared) {
-    collect(*g);
+  for (Group* g : shared)
     for (const Side& sd : g->side) pts.insert(pts.end(), sd.vertices.begin(), sd.vertices.end());
-  }
   std::vector<std::map<Vector3d, Vector3d, PointKey>> moves(prims.size());
   if (!pts.empty()) {
     Eigen::AlignedBox3d box;
@@ -258,7 +263,9 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
       if (to != pts[m].second && moves[std::size_t(pts[m].first)].emplace(pts[m].second, to).second) ++rep.snapped;
     }
   }
-  for (std::size_t i = 0; i < prims.size(); ++i) {
+#pragma omp parallel for schedule(dynamic, 64)
+  for (long li = 0; li < long(prims.size()); ++li) {
+    const std::size_t i = std::size_t(li);
     if (moves[i].empty()) continue;
     TriangleMesh3& m = *meshes[i];
     for (Vector3d& p : m.positions) {
@@ -282,8 +289,8 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
 
   // 3. Insert each side's boundary vertices into the other side's boundary edges.
   std::vector<Insertions> inserts(prims.size());
+  collectAll();
   for (Group* g : shared) {
-    collect(*g);
     double longest = 0, scale = 1;
     for (const Side& s : g->side)
       for (const Edge& e : s.edges) {
@@ -329,9 +336,12 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
       }
     }
   }
-  for (std::size_t i = 0; i < prims.size(); ++i)
+#pragma omp parallel for schedule(dynamic, 64)
+  for (long li = 0; li < long(prims.size()); ++li) {
+    const std::size_t i = std::size_t(li);
     if (!inserts[i].empty())
       applyInsertions(inserts[i], prims[i].quadric.normalized(), *meshes[i], surfaceTriangles[i]);
+  }
   return rep;
 }
 
