@@ -14,11 +14,13 @@ struct Limits {
   // Quadric primitives of a scene, after every object is built: --max-primitives.
   std::size_t max_primitives = 10'000'000;
   // Cells a modeler may create before it culls them (the Kuhn tetrahedra of `algebraic` at
-  // its final level, the simplices times the basis functions reaching them in `bspline`):
+  // its final level; in `bspline`, the leaves of the compiled basis, then a volume's regions):
   // --max-cells.
   std::size_t max_cells = 2'000'000;
-  // Triangles of a tessellation (facets engine, compare): --max-triangles.
-  std::size_t max_triangles = 8'000'000;
+  // Triangles of a tessellation (facets engine, compare): --max-triangles. 4 M keeps the
+  // costliest accepted tessellation (pieces marched, as in the B-spline volume: about 20 us
+  // of CPU per triangle with the draw) within a minute on two cores and about 2.2 GB.
+  std::size_t max_triangles = 4'000'000;
 
   // "WHAT needs N UNIT, above the limit of M (raise it with --OPTION)": the one refusal message.
   static std::string exceeded(const std::string& what, std::size_t needed, const char* unit, std::size_t limit,
