@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "modeling/scene/json_node.h"
+#include "modeling/scene/plain_json.h"
 #include "modeling/scene/scene_error.h"
 
 namespace qacc {
@@ -137,6 +138,7 @@ class StrictBuilder {
 }  // namespace
 
 json parseStrictJson(const std::string& text, const std::string& file) {
+  if (auto plain = parsePlainJson(text)) return std::move(*plain);
   StrictBuilder b(text, file);
   json::sax_parse(text, &b, json::input_format_t::json, /*strict=*/true, /*ignore_comments=*/false);
   return std::move(b.result);
