@@ -22,7 +22,7 @@ namespace qacc {
 
 struct ObjectContext {
   Scene& scene;               // materials may be appended (e.g. per-element colours)
-  std::string directory;      // directory of the scene file, for relative paths
+  const std::string& directory;  // directory of the scene file, for relative paths
   int material;               // the object's material index (from "material" or default)
   bool solid;                 // the object's "solid" flag
   bool has_material = false;  // true when the object named its "material" explicitly

@@ -277,13 +277,17 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
   if (screen) precision.emplace(out.transform.given ? out.transform.M : Eigen::Matrix4d::Identity(), *screen);
   if (ctx.view || precision) {
     // What the builder emitted beyond the view: a piece whose exact world bounds (padded,
-    // primitive_bounds.h) miss the widened view volume cannot reach a pixel.
-    std::vector<Primitive> kept;
-    kept.reserve(out.prims.size());
+    // primitive_bounds.h) miss the widened view volume cannot reach a pixel. The pieces kept
+    // move to the front of the list, in their order.
+    std::size_t kept = 0;
+    auto keep = [&](Primitive& p) {
+      if (&out.prims[kept] != &p) out.prims[kept] = std::move(p);
+      ++kept;
+    };
     for (Primitive& p : out.prims) {
       const PrimitiveBounds b = primitiveBounds(p);
       if (!b.bounded || b.empty) {
-        kept.push_back(std::move(p));
+        keep(p);
         continue;
       }
       if (ctx.view && !worldView->mayContain(b.box)) continue;
@@ -298,9 +302,9 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
           o.fail(m.str());
         }
       }
-      kept.push_back(std::move(p));
+      keep(p);
     }
-    out.prims = std::move(kept);
+    out.prims.erase(out.prims.begin() + std::ptrdiff_t(kept), out.prims.end());
   }
   return out;
 }

@@ -1,5 +1,6 @@
 #include "modeling/scene/json_node.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace qacc {
@@ -15,7 +16,9 @@ std::string jsonPointerKey(const std::string& key) {
 }
 
 JsonNode::JsonNode(const nlohmann::json& j, std::string path, std::shared_ptr<const std::string> file)
-    : j_(&j), path_(std::move(path)), file_(std::move(file)), used_(std::make_shared<std::set<std::string>>()) {}
+    : j_(&j), path_(std::move(path)), file_(std::move(file)) {
+  if (j.is_object()) used_ = std::make_shared<std::vector<const std::string*>>();
+}
 
 void JsonNode::fail(const std::string& problem) const { throw SceneError(*file_, path_, problem); }
 
@@ -38,23 +41,45 @@ bool JsonNode::has(const std::string& key) const {
   return j_->contains(key);
 }
 
+const nlohmann::json* JsonNode::member(const std::string& key) const {
+  if (!j_->is_object()) fail(std::string("expected an object, got ") + typeName());
+  const auto& object = j_->get_ref<const nlohmann::json::object_t&>();
+  const auto it = object.find(key);
+  if (it == object.end()) return nullptr;
+  used_->push_back(&it->first);
+  return &it->second;
+}
+
+std::string JsonNode::childPath(const std::string& key) const {
+  std::string p;
+  p.reserve(path_.size() + 1 + key.size());
+  p += path_;
+  p += '/';
+  if (key.find_first_of("~/") == std::string::npos) p += key;
+  else p += jsonPointerKey(key);
+  return p;
+}
+
 JsonNode JsonNode::at(const std::string& key) const {
-  if (!has(key)) fail("missing required key '" + key + "'");
-  used_->insert(key);
-  return JsonNode(j_->at(key), path_ + "/" + jsonPointerKey(key), file_);
+  const nlohmann::json* v = member(key);
+  if (!v) fail("missing required key '" + key + "'");
+  return JsonNode(*v, childPath(key), file_);
 }
 
 std::optional<JsonNode> JsonNode::get(const std::string& key) const {
-  if (!has(key)) return std::nullopt;
-  used_->insert(key);
-  return JsonNode(j_->at(key), path_ + "/" + jsonPointerKey(key), file_);
+  const nlohmann::json* v = member(key);
+  if (!v) return std::nullopt;
+  return JsonNode(*v, childPath(key), file_);
 }
 
 void JsonNode::finish() const {
   if (!j_->is_object()) return;
-  for (auto it = j_->begin(); it != j_->end(); ++it)
-    if (!used_->count(it.key()))
-      JsonNode(it.value(), path_ + "/" + jsonPointerKey(it.key()), file_).fail("unknown key '" + it.key() + "'");
+  std::vector<const std::string*>& used = *used_;
+  std::sort(used.begin(), used.end());
+  const auto& object = j_->get_ref<const nlohmann::json::object_t&>();
+  for (const auto& [key, value] : object)
+    if (!std::binary_search(used.begin(), used.end(), &key))
+      JsonNode(value, childPath(key), file_).fail("unknown key '" + key + "'");
 }
 
 std::size_t JsonNode::size() const {
@@ -112,23 +137,39 @@ std::string JsonNode::string() const {
   return j_->get<std::string>();
 }
 
-std::vector<double> JsonNode::numbers(std::size_t n) const {
+void JsonNode::readNumbers(double* out, std::size_t n) const {
   if (!j_->is_array()) fail("expected an array of " + std::to_string(n) + " numbers, got " + typeName());
   if (j_->size() != n)
     fail("expected " + std::to_string(n) + " numbers, got " + std::to_string(j_->size()));
+  for (std::size_t i = 0; i < n; ++i) {
+    const nlohmann::json& e = (*j_)[i];
+    if (e.is_number()) {
+      const double v = e.get<double>();
+      if (std::isfinite(v)) {
+        out[i] = v;
+        continue;
+      }
+    }
+    out[i] = (*this)[i].number();  // refuses it, with the element's path
+  }
+}
+
+std::vector<double> JsonNode::numbers(std::size_t n) const {
   std::vector<double> out(n);
-  for (std::size_t i = 0; i < n; ++i) out[i] = (*this)[i].number();
+  readNumbers(out.data(), n);
   return out;
 }
 
 Eigen::Vector3d JsonNode::vec3() const {
-  const auto v = numbers(3);
-  return {v[0], v[1], v[2]};
+  Eigen::Vector3d v;
+  readNumbers(v.data(), 3);
+  return v;
 }
 
 Eigen::Vector4d JsonNode::vec4() const {
-  const auto v = numbers(4);
-  return {v[0], v[1], v[2], v[3]};
+  Eigen::Vector4d v;
+  readNumbers(v.data(), 4);
+  return v;
 }
 
 Eigen::Vector3d JsonNode::color() const {

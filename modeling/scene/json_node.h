@@ -2,10 +2,12 @@
 // Every accessor checks type, arity and finiteness and throws SceneError naming the file,
 // the JSON Pointer path (e.g. /objects/3/center) and the problem. Keys read through a node
 // are recorded; finish() refuses any key of the object that nobody read (unknown keys).
+// Loading is linear in the input and cheap per value: a node's path is built once per node
+// (children of arrays of numbers get one only to report an error), and only object nodes
+// keep a record of the keys read, by the address of the key in the document.
 #pragma once
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -62,8 +64,12 @@ class JsonNode {
   const nlohmann::json* j_;
   std::string path_;
   std::shared_ptr<const std::string> file_;
-  std::shared_ptr<std::set<std::string>> used_;
+  // Object nodes only: the keys read (their addresses in j_), shared by the node's copies.
+  std::shared_ptr<std::vector<const std::string*>> used_;
   const char* typeName() const;
+  const nlohmann::json* member(const std::string& key) const;  // nullptr when absent
+  std::string childPath(const std::string& key) const;
+  void readNumbers(double* out, std::size_t n) const;
 };
 
 // JSON Pointer escaping of one key (~ → ~0, / → ~1).

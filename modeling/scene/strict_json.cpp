@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "modeling/scene/json_node.h"
+#include "modeling/scene/plain_json.h"
 #include "modeling/scene/scene_error.h"
 
 namespace qacc {
@@ -46,15 +47,21 @@ class StrictBuilder {
   }
   bool key(json::string_t& k) {
     Open& o = stack_.back();
-    if (o.node->contains(k))
+    // One look-up: the key is moved in when new and left as it is when already there.
+    const auto [it, inserted] = o.node->get_ref<json::object_t&>().try_emplace(std::move(k));
+    if (!inserted)
       throw SceneError(file_, path(stack_.size()) + "/" + jsonPointerKey(k), "duplicate key '" + k + "'");
-    o.key = k;
-    o.slot = &(*o.node)[k];
+    o.key = &it->first;
+    o.slot = &it->second;
     return true;
   }
   bool end_object() { return close(); }
   bool start_array(std::size_t) {
-    open(json::array(), true);
+    // Most arrays of a scene are points, colours or planes: room for four values at once
+    // instead of three reallocations.
+    json a = json::array();
+    a.get_ref<json::array_t&>().reserve(4);
+    open(std::move(a), true);
     return true;
   }
   bool end_array() { return close(); }
@@ -80,7 +87,7 @@ class StrictBuilder {
   struct Open {
     json* node;
     bool array;
-    std::string key;       // objects: the current key
+    const std::string* key = nullptr;  // objects: the current key (in the document)
     json* slot = nullptr;  // objects: where the current key's value goes
   };
   const std::string& text_;
@@ -106,7 +113,7 @@ class StrictBuilder {
   }
   void open(json&& v, bool array) {
     json* node = place(std::move(v));
-    stack_.push_back(Open{node, array, {}, nullptr});
+    stack_.push_back(Open{node, array, nullptr, nullptr});
   }
   bool close() {
     stack_.pop_back();
@@ -114,7 +121,7 @@ class StrictBuilder {
   }
   std::string element(const Open& o, bool next) const {
     if (o.array) return std::to_string(o.node->size() - (next ? 0 : 1));
-    return jsonPointerKey(o.key);
+    return o.key ? jsonPointerKey(*o.key) : std::string();
   }
   // Path of the innermost open container's elements up to depth `upto` (the current ones).
   std::string path(std::size_t upto) const {
@@ -131,6 +138,7 @@ class StrictBuilder {
 }  // namespace
 
 json parseStrictJson(const std::string& text, const std::string& file) {
+  if (auto plain = parsePlainJson(text)) return std::move(*plain);
   StrictBuilder b(text, file);
   json::sax_parse(text, &b, json::input_format_t::json, /*strict=*/true, /*ignore_comments=*/false);
   return std::move(b.result);

@@ -2,7 +2,8 @@
 // names the problem, never a crash, undefined behaviour, an endless run or a bad_alloc.
 #include <gtest/gtest.h>
 
-#include <chrono>
+#include <algorithm>
+#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -188,7 +189,10 @@ TEST(Reliability, StrictJsonPathsAndPositions) {
 
 // Loading is linear in the number of objects (the DOM-callback parser was quadratic: 100 k
 // spheres took 2.5 s, 200 k 12.7 s): 200 k spheres must load within 8x the time of 50 k
-// (linear is 4x, allocation and caches add some; quadratic would be 16x).
+// (linear is 4x, allocation and caches add some; quadratic would be 16x). The time is the
+// CPU time of this thread, best of two loads of each, so that other processes holding the
+// cores of a loaded machine do not count (wall time did); `qacc bench-load` prints the
+// figures up to 1 M spheres (docs/PERFORMANCE.md, "Loading at scale").
 TEST(Reliability, LoadingIsLinearInTheObjects) {
   auto scene = [](int n) {
     std::string objs;
@@ -200,15 +204,24 @@ TEST(Reliability, LoadingIsLinearInTheObjects) {
     }
     return sceneWith(objs);
   };
+  auto threadSeconds = [] {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+  };
   auto seconds = [&](const std::string& text) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const Scene s = parseScene(text, "s.json", ".");
-    EXPECT_FALSE(s.primitives.empty());
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    double best = 1e300;
+    for (int r = 0; r < 2; ++r) {
+      const double t0 = threadSeconds();
+      const Scene s = parseScene(text, "s.json", ".");
+      best = std::min(best, threadSeconds() - t0);
+      EXPECT_FALSE(s.primitives.empty());
+    }
+    return best;
   };
   const std::string small = scene(50000), large = scene(200000);
   const double ts = seconds(small), tl = seconds(large);
-  std::printf("load: 50 k spheres %.3f s, 200 k spheres %.3f s (ratio %.2f)\n", ts, tl, tl / ts);
+  std::printf("load (thread CPU time): 50 k spheres %.3f s, 200 k spheres %.3f s (ratio %.2f)\n", ts, tl, tl / ts);
   EXPECT_LT(tl, 8.0 * ts);
 }
 

@@ -11,6 +11,7 @@ void addInfoCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);  // tools/compare_command.cpp
 void addReduceCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);  // tools/bench_command.cpp (accelerator benchmark)
+void addBenchLoadCommand(CLI::App& app);  // tools/bench_load_command.cpp (loading benchmark)
 void addSweepCommand(CLI::App& app);
 void addAutosizeCommand(CLI::App& app);
 

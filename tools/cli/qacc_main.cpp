@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   qacc::addCompareCommand(app);
   qacc::addReduceCommand(app);
   qacc::addBenchCommand(app);
+  qacc::addBenchLoadCommand(app);
   qacc::addSweepCommand(app);
   qacc::addAutosizeCommand(app);
   try {
