@@ -21,6 +21,7 @@
 #include "modeling/tessellation/marching_piece.h"
 #include "modeling/tessellation/parametric_grid.h"
 #include "modeling/tessellation/piece_boundary.h"
+#include "modeling/tessellation/piece_in_view.h"
 #include "modeling/tessellation/quadric_frame.h"
 #include "modeling/tessellation/screen_error.h"
 #include "modeling/tessellation/shared_boundaries.h"
@@ -332,25 +333,33 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
                                                options.max_scene_triangles, "max-triangles"));
   };
   // Pieces, in parallel (each depends on its primitive and the view only).
+  // Whether each surely reaches the view (piece_in_view.h): only those are stitched below.
   std::vector<PrimitiveTessellation> pieces(n);
+  std::vector<char> inView(n, 0);
+  const tess::PieceInView inViewTest(view);
   ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1)
   for (long i = 0; i < long(n); ++i)
     errors.run([&] {
-      if (exactOf[std::size_t(i)] < 0) {
-        pieces[std::size_t(i)] = tessellatePrimitive(scene.primitives[std::size_t(i)], options, &scene.camera, aspect, &view);
-        count(pieces[std::size_t(i)].mesh.size());
+      const std::size_t k = std::size_t(i);
+      if (exactOf[k] < 0) {
+        pieces[k] = tessellatePrimitive(scene.primitives[k], options, &scene.camera, aspect, &view);
+        count(pieces[k].mesh.size());
+        inView[k] = inViewTest.surelyInView(scene.primitives[k], pieces[k].mesh, pieces[k].surface_triangles);
       }
     });
   errors.rethrow();
   // Shared boundaries sampled once for both sides (shared_boundaries.h).
   std::vector<TriangleMesh3*> meshes(n, nullptr);
   std::vector<std::size_t> surface(n, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    if (exactOf[i] < 0) {
-      meshes[i] = &pieces[i].mesh;
-      surface[i] = pieces[i].surface_triangles;
-    }
+  // Only pieces that surely reach the view are stitched: those are present whether or not
+  // view culling removed the pieces outside it, so the triangles of a kept piece never depend
+  // on the neighbours culling removed (a piece culling removes has no point in the view, so
+  // its shared boundary with a kept piece lies outside the view as well).
+  for (std::size_t i = 0; i < n; ++i) {
+    surface[i] = pieces[i].surface_triangles;
+    if (inView[i]) meshes[i] = &pieces[i].mesh;
+  }
   tess::stitchSharedBoundaries(scene.primitives, meshes, surface);
 
   TriangleMesh3 all;
