@@ -365,34 +365,52 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
   TriangleMesh3 all;
   double meanSum = 0, pixelMeanSum = 0;
   std::size_t measured = 0;
+  // The true surface of object `o`, tagged with primitive `prim` (its first piece, or -1 when
+  // it has none).
+  auto drawExact = [&](std::size_t o, int prim, int material) {
+    const SceneObject& object = scene.objects[o];
+    const ExactSurface& surf = *scene.exact_surfaces[std::size_t(object.exact_surface)];
+    // Sized by the object's whole model when the modeler gave it, so that view culling
+    // (which lowers the pieces emitted) does not change the mesh.
+    ExactSurfaceMesh em =
+        tess::tessellateExact(surf, object.model_cells > 0 ? object.model_cells : object.count, options, &view);
+    if (options.pixel_error > 0) {
+      const double s = view.maxPixelsPerUnit(surf.bounds());
+      rep.max_pixel_error = std::max(rep.max_pixel_error, em.max_error * s);
+      pixelMeanSum += em.mean_error * s;
+    }
+    const int grid = em.grid;
+    const double maxError = em.max_error, meanError = em.mean_error;
+    const TriangleMesh3 t = tess::exactSurfaceFacets(std::move(em), int(o), material, prim);
+    count(t.size());
+    all.append(t);
+    ++rep.exact_surfaces;
+    rep.exact_triangles += t.size();
+    rep.triangles += t.size();
+    rep.exact_grid = std::max(rep.exact_grid, grid);
+    rep.max_chord_error = std::max(rep.max_chord_error, maxError);
+    meanSum += meanError;
+    ++measured;
+  };
+  // An object with an exact surface and no piece (view culling removed them all) is still
+  // drawn, in object order, as the reference draws it: its mesh is the whole surface's and
+  // its chords can reach the view where no piece of the surface does.
+  auto hasNoPiece = [&](std::size_t o) {
+    const SceneObject& object = scene.objects[o];
+    return object.count == 0 && object.exact_surface >= 0 &&
+           std::size_t(object.exact_surface) < scene.exact_surfaces.size();
+  };
+  std::size_t nextObject = 0;  // the objects before it are drawn, or have pieces
+  auto drawPiecelessBefore = [&](std::size_t end) {
+    for (; nextObject < std::min(end, scene.objects.size()); ++nextObject)
+      if (hasNoPiece(nextObject)) drawExact(nextObject, -1, scene.objects[nextObject].material);
+  };
   for (std::size_t i = 0; i < n; ++i) {
     const Primitive& p = scene.primitives[i];
+    if (p.object >= 0) drawPiecelessBefore(std::size_t(p.object));
     if (exactOf[i] >= 0) {
       // The object's true surface replaces its pieces, drawn once at its first piece.
-      if (!exactFirst[i]) continue;
-      const ExactSurface& surf = *scene.exact_surfaces[std::size_t(exactOf[i])];
-      // Sized by the object's whole model when the modeler gave it, so that view culling
-      // (which lowers the pieces emitted) does not change the mesh.
-      const SceneObject& object = scene.objects[std::size_t(p.object)];
-      ExactSurfaceMesh em =
-          tess::tessellateExact(surf, object.model_cells > 0 ? object.model_cells : object.count, options, &view);
-      if (options.pixel_error > 0) {
-        const double s = view.maxPixelsPerUnit(surf.bounds());
-        rep.max_pixel_error = std::max(rep.max_pixel_error, em.max_error * s);
-        pixelMeanSum += em.mean_error * s;
-      }
-      const int grid = em.grid;
-      const double maxError = em.max_error, meanError = em.mean_error;
-      const TriangleMesh3 t = tess::exactSurfaceFacets(std::move(em), p.object, p.material, int(i));
-      count(t.size());
-      all.append(t);
-      ++rep.exact_surfaces;
-      rep.exact_triangles += t.size();
-      rep.triangles += t.size();
-      rep.exact_grid = std::max(rep.exact_grid, grid);
-      rep.max_chord_error = std::max(rep.max_chord_error, maxError);
-      meanSum += meanError;
-      ++measured;
+      if (exactFirst[i]) drawExact(std::size_t(p.object), int(i), p.material);
       continue;
     }
     PrimitiveTessellation& t = pieces[i];
@@ -419,6 +437,7 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
     ++measured;
     t.mesh = TriangleMesh3();  // appended: release it
   }
+  drawPiecelessBefore(scene.objects.size());
   rep.mean_chord_error = measured ? meanSum / double(measured) : 0.0;
   rep.mean_pixel_error = measured ? pixelMeanSum / double(measured) : 0.0;
   if (report) *report = rep;
