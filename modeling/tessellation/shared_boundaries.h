@@ -17,6 +17,8 @@
 // vertices on both sides and the mesh has no T-junction there: each edge of a shared
 // boundary is used by exactly two triangles. Where the quadric pieces themselves have a
 // gap (a piece not G0 with its neighbour) nothing is inserted: the facets keep that gap.
+// tessellateScene stitches only the pieces that surely reach the view (piece_in_view.h), so
+// that view culling, which removes pieces outside it, changes no kept piece's triangles.
 #pragma once
 #include <cstddef>
 #include <vector>

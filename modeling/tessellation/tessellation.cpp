@@ -21,6 +21,7 @@
 #include "modeling/tessellation/marching_piece.h"
 #include "modeling/tessellation/parametric_grid.h"
 #include "modeling/tessellation/piece_boundary.h"
+#include "modeling/tessellation/piece_in_view.h"
 #include "modeling/tessellation/quadric_frame.h"
 #include "modeling/tessellation/screen_error.h"
 #include "modeling/tessellation/shared_boundaries.h"
@@ -346,62 +347,100 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
                                                options.max_scene_triangles, "max-triangles"));
   };
   // Pieces, in parallel (each depends on its primitive and the view only).
+  // Whether each surely reaches the view (piece_in_view.h): only those are stitched below.
   std::vector<PrimitiveTessellation> pieces(n);
+  std::vector<char> inView(n, 0);
+  const tess::PieceInView inViewTest(view);
   ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1)
   for (long i = 0; i < long(n); ++i)
     errors.run([&] {
-      if (exactOf[std::size_t(i)] < 0) {
-        pieces[std::size_t(i)] = tessellatePrimitive(scene.primitives[std::size_t(i)], options, &scene.camera, aspect, &view);
-        count(pieces[std::size_t(i)].mesh.size());
+      const std::size_t k = std::size_t(i);
+      if (exactOf[k] < 0) {
+        pieces[k] = tessellatePrimitive(scene.primitives[k], options, &scene.camera, aspect, &view);
+        count(pieces[k].mesh.size());
+        inView[k] = inViewTest.surelyInView(scene.primitives[k], pieces[k].mesh, pieces[k].surface_triangles);
       }
     });
   errors.rethrow();
   // Shared boundaries sampled once for both sides (shared_boundaries.h).
   std::vector<TriangleMesh3*> meshes(n, nullptr);
   std::vector<std::size_t> surface(n, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    if (exactOf[i] < 0) {
-      meshes[i] = &pieces[i].mesh;
-      surface[i] = pieces[i].surface_triangles;
-    }
+  // Only pieces that surely reach the view are stitched: those are present whether or not
+  // view culling removed the pieces outside it, so the triangles of a kept piece never depend
+  // on the neighbours culling removed (a piece culling removes has no point in the view, so
+  // its shared boundary with a kept piece lies outside the view as well).
+  for (std::size_t i = 0; i < n; ++i) {
+    surface[i] = pieces[i].surface_triangles;
+    if (inView[i]) meshes[i] = &pieces[i].mesh;
+  }
   tess::stitchSharedBoundaries(scene.primitives, meshes, surface);
 
   // The report in scene order (its means are sums in that order), the exact surfaces' meshes
-  // made in that order too (into their first piece's slot); then every mesh is copied into
-  // its own slice of the scene's arrays, in parallel, and released.
+  // made in that order too; the meshes are listed in drawing order (slots), then each is
+  // copied into its own slice of the scene's arrays, in parallel, and released.
   double meanSum = 0, pixelMeanSum = 0;
   std::size_t measured = 0;
-  std::vector<bool> kept(n, false);
+  struct Slot {
+    TriangleMesh3* mesh;
+    int primitive;  // its piece (object, material and primitive of every triangle), or -1: the
+                    // mesh carries its own per-triangle tags (exact surfaces)
+  };
+  std::vector<Slot> slots;
+  slots.reserve(n);
+  std::vector<TriangleMesh3> pieceless;  // exact surfaces of objects without a piece
+  pieceless.reserve(scene.objects.size());
+  // The true surface of object `o`, tagged with primitive `prim` (its first piece, or -1 when
+  // it has none).
+  auto drawExact = [&](std::size_t o, int prim, int material) {
+    const SceneObject& object = scene.objects[o];
+    const ExactSurface& surf = *scene.exact_surfaces[std::size_t(object.exact_surface)];
+    // Sized by the object's whole model when the modeler gave it, so that view culling
+    // (which lowers the pieces emitted) does not change the mesh.
+    ExactSurfaceMesh em =
+        tess::tessellateExact(surf, object.model_cells > 0 ? object.model_cells : object.count, options, &view);
+    if (options.pixel_error > 0) {
+      const double s = view.maxPixelsPerUnit(surf.bounds());
+      rep.max_pixel_error = std::max(rep.max_pixel_error, em.max_error * s);
+      pixelMeanSum += em.mean_error * s;
+    }
+    const int grid = em.grid;
+    const double maxError = em.max_error, meanError = em.mean_error;
+    TriangleMesh3 t = tess::exactSurfaceFacets(std::move(em), int(o), material, prim);
+    count(t.size());
+    ++rep.exact_surfaces;
+    rep.exact_triangles += t.size();
+    rep.triangles += t.size();
+    rep.exact_grid = std::max(rep.exact_grid, grid);
+    rep.max_chord_error = std::max(rep.max_chord_error, maxError);
+    meanSum += meanError;
+    ++measured;
+    return t;
+  };
+  // An object with an exact surface and no piece (view culling removed them all) is still
+  // drawn, in object order, as the reference draws it: its mesh is the whole surface's and
+  // its chords can reach the view where no piece of the surface does.
+  auto hasNoPiece = [&](std::size_t o) {
+    const SceneObject& object = scene.objects[o];
+    return object.count == 0 && object.exact_surface >= 0 &&
+           std::size_t(object.exact_surface) < scene.exact_surfaces.size();
+  };
+  std::size_t nextObject = 0;  // the objects before it are drawn, or have pieces
+  auto drawPiecelessBefore = [&](std::size_t end) {
+    for (; nextObject < std::min(end, scene.objects.size()); ++nextObject)
+      if (hasNoPiece(nextObject)) {
+        pieceless.push_back(drawExact(nextObject, -1, scene.objects[nextObject].material));
+        slots.push_back({&pieceless.back(), -1});
+      }
+  };
   for (std::size_t i = 0; i < n; ++i) {
     const Primitive& p = scene.primitives[i];
+    if (p.object >= 0) drawPiecelessBefore(std::size_t(p.object));
     if (exactOf[i] >= 0) {
       // The object's true surface replaces its pieces, drawn once at its first piece.
       if (!exactFirst[i]) continue;
-      const ExactSurface& surf = *scene.exact_surfaces[std::size_t(exactOf[i])];
-      // Sized by the object's whole model when the modeler gave it, so that view culling
-      // (which lowers the pieces emitted) does not change the mesh.
-      const SceneObject& object = scene.objects[std::size_t(p.object)];
-      ExactSurfaceMesh em =
-          tess::tessellateExact(surf, object.model_cells > 0 ? object.model_cells : object.count, options, &view);
-      if (options.pixel_error > 0) {
-        const double s = view.maxPixelsPerUnit(surf.bounds());
-        rep.max_pixel_error = std::max(rep.max_pixel_error, em.max_error * s);
-        pixelMeanSum += em.mean_error * s;
-      }
-      const int grid = em.grid;
-      const double maxError = em.max_error, meanError = em.mean_error;
-      TriangleMesh3 t = tess::exactSurfaceFacets(std::move(em), p.object, p.material, int(i));
-      count(t.size());
-      ++rep.exact_surfaces;
-      rep.exact_triangles += t.size();
-      rep.triangles += t.size();
-      rep.exact_grid = std::max(rep.exact_grid, grid);
-      rep.max_chord_error = std::max(rep.max_chord_error, maxError);
-      meanSum += meanError;
-      ++measured;
-      pieces[i].mesh = std::move(t);
-      kept[i] = true;
+      pieces[i].mesh = drawExact(std::size_t(p.object), int(i), p.material);
+      slots.push_back({&pieces[i].mesh, -1});
       continue;
     }
     PrimitiveTessellation& t = pieces[i];
@@ -422,45 +461,45 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
     rep.max_pixel_error = std::max(rep.max_pixel_error, t.max_pixel_error);
     pixelMeanSum += t.mean_pixel_error;
     ++measured;
-    kept[i] = true;
+    slots.push_back({&t.mesh, int(i)});
   }
-  // Where each kept mesh goes: what TriangleMesh3::append in scene order would give.
-  std::vector<std::size_t> vertexAt(n + 1, 0), normalAt(n + 1, 0), triangleAt(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const TriangleMesh3& m = pieces[i].mesh;
-    const bool k = kept[i];
-    vertexAt[i + 1] = vertexAt[i] + (k ? m.positions.size() : 0);
-    normalAt[i + 1] = normalAt[i] + (k ? m.normals.size() : 0);
-    triangleAt[i + 1] = triangleAt[i] + (k ? m.triangles.size() : 0);
+  drawPiecelessBefore(scene.objects.size());
+  // Where each slot's mesh goes: what TriangleMesh3::append in drawing order would give.
+  const std::size_t m = slots.size();
+  std::vector<std::size_t> vertexAt(m + 1, 0), normalAt(m + 1, 0), triangleAt(m + 1, 0);
+  for (std::size_t k = 0; k < m; ++k) {
+    const TriangleMesh3& mesh = *slots[k].mesh;
+    vertexAt[k + 1] = vertexAt[k] + mesh.positions.size();
+    normalAt[k + 1] = normalAt[k] + mesh.normals.size();
+    triangleAt[k + 1] = triangleAt[k] + mesh.triangles.size();
   }
   TriangleMesh3 all;
-  all.positions.resize(vertexAt[n]);
-  all.normals.resize(normalAt[n]);
-  all.triangles.resize(triangleAt[n]);
-  all.object.resize(triangleAt[n]);
-  all.material.resize(triangleAt[n]);
-  all.primitive.resize(triangleAt[n]);
+  all.positions.resize(vertexAt[m]);
+  all.normals.resize(normalAt[m]);
+  all.triangles.resize(triangleAt[m]);
+  all.object.resize(triangleAt[m]);
+  all.material.resize(triangleAt[m]);
+  all.primitive.resize(triangleAt[m]);
 #pragma omp parallel for schedule(dynamic, 64)
-  for (long li = 0; li < long(n); ++li) {
-    const std::size_t i = std::size_t(li);
-    if (!kept[i]) continue;
-    TriangleMesh3& m = pieces[i].mesh;
-    std::copy(m.positions.begin(), m.positions.end(), all.positions.begin() + std::ptrdiff_t(vertexAt[i]));
-    std::copy(m.normals.begin(), m.normals.end(), all.normals.begin() + std::ptrdiff_t(normalAt[i]));
-    const int base = int(vertexAt[i]);
-    const std::size_t t0 = triangleAt[i];
-    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-      const auto& tri = m.triangles[t];
+  for (long lk = 0; lk < long(m); ++lk) {
+    const std::size_t k = std::size_t(lk);
+    TriangleMesh3& mesh = *slots[k].mesh;
+    std::copy(mesh.positions.begin(), mesh.positions.end(), all.positions.begin() + std::ptrdiff_t(vertexAt[k]));
+    std::copy(mesh.normals.begin(), mesh.normals.end(), all.normals.begin() + std::ptrdiff_t(normalAt[k]));
+    const int base = int(vertexAt[k]);
+    const std::size_t t0 = triangleAt[k];
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& tri = mesh.triangles[t];
       all.triangles[t0 + t] = {tri[0] + base, tri[1] + base, tri[2] + base};
     }
-    const Primitive& p = scene.primitives[i];
-    const bool exact = exactOf[i] >= 0;
-    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-      all.object[t0 + t] = exact ? m.object[t] : p.object;
-      all.material[t0 + t] = exact ? m.material[t] : p.material;
-      all.primitive[t0 + t] = exact ? m.primitive[t] : int(i);
+    const int prim = slots[k].primitive;
+    const Primitive* p = prim >= 0 ? &scene.primitives[std::size_t(prim)] : nullptr;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      all.object[t0 + t] = p ? p->object : mesh.object[t];
+      all.material[t0 + t] = p ? p->material : mesh.material[t];
+      all.primitive[t0 + t] = p ? prim : mesh.primitive[t];
     }
-    m = TriangleMesh3();  // copied: release it
+    mesh = TriangleMesh3();  // copied: release it
   }
   rep.mean_chord_error = measured ? meanSum / double(measured) : 0.0;
   rep.mean_pixel_error = measured ? pixelMeanSum / double(measured) : 0.0;

@@ -32,6 +32,9 @@
 // per quadric piece of the object so that a level means the same budget as for the pieces,
 // or with `chord_error` the budget quadrupled from 64 per piece until the sampled distance
 // to the true surface is at most the bound (up to the finest marching grid).
+// An object with an exact surface and no piece (view culling removed them all) is drawn too,
+// in object order, its triangles tagged with primitive -1 (the renderer's id pass takes the
+// object from TriangleMesh3::object).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -52,7 +55,7 @@ struct TriangleMesh3 {
   std::vector<std::array<int, 3>> triangles;
   std::vector<int> object;    // per triangle: scene object index
   std::vector<int> material;  // per triangle: material index
-  std::vector<int> primitive; // per triangle: primitive index in the scene
+  std::vector<int> primitive; // per triangle: primitive index in the scene, -1 for an object without pieces
 
   std::size_t size() const { return triangles.size(); }
   void append(const TriangleMesh3& other);

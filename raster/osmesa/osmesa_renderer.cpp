@@ -242,6 +242,16 @@ struct VertexArrays {
   std::vector<GLfloat> pos, nor, col, spec, idc;
 };
 
+// The id pass's colour of triangle t: its primitive + 1, or, for a triangle of an object
+// with no primitive (an exact surface whose pieces view culling removed), the primitive
+// count + 1 + its object.
+std::uint32_t facetId(const Scene& scene, const TriangleMesh3& mesh, std::size_t t) {
+  if (t >= mesh.primitive.size()) return 1u;
+  if (mesh.primitive[t] >= 0) return std::uint32_t(mesh.primitive[t] + 1);
+  const int object = t < mesh.object.size() ? mesh.object[t] : 0;
+  return std::uint32_t(scene.primitives.size() + 1) + std::uint32_t(std::max(object, 0));
+}
+
 // Triangles in parallel (each writes its own three vertices: the arrays do not depend on the
 // thread count).
 VertexArrays vertexArrays(const Scene& scene, const TriangleMesh3& mesh, bool gouraud, int threads) {
@@ -259,7 +269,7 @@ VertexArrays vertexArrays(const Scene& scene, const TriangleMesh3& mesh, bool go
     const std::size_t t = std::size_t(ti);
     const int mi = t < mesh.material.size() ? mesh.material[t] : 0;
     const Material& m = scene.materials[std::size_t(mi) < scene.materials.size() ? std::size_t(mi) : 0];
-    const std::uint32_t id = t < mesh.primitive.size() ? std::uint32_t(mesh.primitive[t] + 1) : 1u;
+    const std::uint32_t id = facetId(scene, mesh, t);
     for (int k = 0; k < 3; ++k) {
       const std::size_t v = t * 3 + std::size_t(k);
       const Eigen::Vector3d& p = mesh.positions[std::size_t(mesh.triangles[t][k])];
@@ -366,10 +376,15 @@ void readIds(const Scene& scene, const std::vector<float>& rgba, const std::vect
       const std::uint32_t id = (std::uint32_t(std::lround(c[0] * 255.0f)) << 16) |
                                (std::uint32_t(std::lround(c[1] * 255.0f)) << 8) | std::uint32_t(std::lround(c[2] * 255.0f));
       if (id == 0) continue;
-      const int prim = int(id) - 1;
-      if (prim < 0 || std::size_t(prim) >= scene.primitives.size()) continue;
-      res.fb.primitive[i] = prim;
-      res.fb.object[i] = scene.primitives[std::size_t(prim)].object;
+      const std::size_t prim = std::size_t(id) - 1, nprim = scene.primitives.size();
+      if (prim < nprim) {
+        res.fb.primitive[i] = int(prim);
+        res.fb.object[i] = scene.primitives[prim].object;
+      } else if (prim - nprim < scene.objects.size()) {
+        res.fb.object[i] = int(prim - nprim);  // an object without primitives (facetId)
+      } else {
+        continue;
+      }
       res.fb.depth[i] = double(depth[g]);
     }
   }

@@ -203,6 +203,28 @@ TEST(ExactFacets, MeshDoesNotDependOnViewCulling) {
   EXPECT_EQ(a.exact_grid, b.exact_grid);
 }
 
+TEST(ExactFacets, MeshDoesNotDependOnViewCullingThatRemovesEveryPiece) {
+  // The view aims beside the torus, at a sphere: culling removes every piece of the torus,
+  // and the facets still draw its true surface (whose chords may reach a view its pieces do
+  // not), the same triangles as unculled, before the sphere's as in the unculled scene.
+  nlohmann::json doc = nlohmann::json::parse(torusScene(R"js(}, {"type": "sphere", "center": [4, 0, 0], "radius": 0.5)js"));
+  doc["camera"]["target"] = {4.0, 0.0, 0.0};
+  doc["camera"]["fov_y_deg"] = 10;
+  const Scene culled = parseScene(doc.dump(), "exact.json", ".");
+  const Scene unculled = parseScene(doc.dump(), "exact.json", ".", Limits{}, ViewCulling{false, 0, 0});
+  ASSERT_EQ(culled.objects[0].count, 0u);
+  ASSERT_GT(unculled.objects[0].count, 0u);
+  ASSERT_EQ(culled.objects[1].count, 1u);
+  TessellationReport a, b;
+  const TriangleMesh3 ma = tessellateScene(culled, TessellationOptions{6}, &a),
+                      mb = tessellateScene(unculled, TessellationOptions{6}, &b);
+  EXPECT_EQ(a.exact_surfaces, 1u);
+  EXPECT_EQ(a.exact_triangles, b.exact_triangles);
+  EXPECT_EQ(ma.positions, mb.positions);
+  EXPECT_EQ(ma.triangles, mb.triangles);
+  EXPECT_EQ(ma.object, mb.object);
+}
+
 TEST(ExactFacets, ChordErrorBoundRefinesTheTrueSurface) {
   const Scene scene = parseScene(torusScene(""), "exact.json", ".");
   TessellationOptions to;
@@ -234,5 +256,25 @@ TEST(ExactFacets, FacetImageApproachesTheTruthAsTheLevelRises) {
   }
   // 32 triangles per piece: silhouettes within a pixel or so of the truth.
   EXPECT_LT(previousCoverage, 0.01 * double(coverageError(truth, truth).reference_covered));
+}
+TEST(ExactFacets, AnObjectWithoutPiecesIsDrawnAsWithThem) {
+  // An object whose pieces view culling all removed is drawn by its true surface, with its own
+  // object id (the id pass has no primitive for it): the image of the torus without its pieces
+  // is the image with them.
+  if (!facetRendererAvailable()) GTEST_SKIP() << facetRendererMissingMessage();
+  const Scene scene = parseScene(torusScene("", 64, 48), "exact.json", ".");
+  Scene piecesRemoved = scene;
+  piecesRemoved.primitives.clear();
+  piecesRemoved.objects[0].count = 0;
+  TessellationOptions to;
+  to.triangles = 6;
+  const FrameBuffer a = renderFacets(scene, tessellateScene(scene, to), FacetRenderOptions()).fb;
+  const FrameBuffer b = renderFacets(piecesRemoved, tessellateScene(piecesRemoved, to), FacetRenderOptions()).fb;
+  std::size_t drawn = 0;
+  for (int o : a.object) drawn += o == 0;
+  EXPECT_GT(drawn, 500u);
+  EXPECT_EQ(a.object, b.object);
+  EXPECT_EQ(a.color.data, b.color.data);
+  EXPECT_EQ(a.depth, b.depth);
 }
 #endif  // QACC_HAVE_OSMESA
