@@ -13,7 +13,7 @@ int HierarchicalZMemory::bitsPerTile(const HwConfig& cfg) {
 }
 
 HierarchicalZMemory::HierarchicalZMemory(const HwConfig& cfg, int x0, int y0, int width, int height)
-    : x0_(x0), y0_(y0), width_(width), height_(height), size_(cfg.hiz_tile_size) {
+    : x0_(x0), y0_(y0), width_(width), size_(cfg.hiz_tile_size) {
   shift_ = 0;
   while ((1 << shift_) < size_) ++shift_;
   tilesX_ = (width + size_ - 1) / size_;

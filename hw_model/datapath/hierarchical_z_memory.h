@@ -68,7 +68,7 @@ class HierarchicalZMemory {
   static int depthBits(const HwConfig& cfg);
 
  private:
-  int x0_, y0_, width_, height_;
+  int x0_, y0_, width_;
   int size_, shift_, tilesX_, tilesY_, coarseShift_;
   std::vector<Tile> tiles_;
   std::vector<std::uint32_t> tilePixels_;  // pixels of each tile inside the region
