@@ -42,9 +42,14 @@ bool PieceInView::surelyInView(const Primitive& prim, const TriangleMesh3& mesh,
   world.linear = true;
   world.position = [](const Vector3d& p) { return p; };
   const Quadric q = prim.quadric.normalized();
+  Polygon tri, scratch;
   for (std::size_t t = 0; t < n; ++t) {
-    Polygon tri(3);
-    for (int k = 0; k < 3; ++k) tri[std::size_t(k)].coord = mesh.positions[std::size_t(mesh.triangles[t][std::size_t(k)])];
+    tri.assign(3, ClipVertex{});
+    for (int k = 0; k < 3; ++k) {
+      ClipVertex& v = tri[std::size_t(k)];
+      v.coord = mesh.positions[std::size_t(mesh.triangles[t][std::size_t(k)])];
+      v.pos = v.coord;  // the domain is world space
+    }
     // Quick rejection: all three corners beyond one side of the image.
     bool outside = false;
     for (const HalfSpace& h : image_) {
@@ -53,7 +58,8 @@ bool PieceInView::surelyInView(const Primitive& prim, const TriangleMesh3& mesh,
       outside = outside || all;
     }
     if (outside) continue;
-    const Polygon part = clipPolygon(tri, world, image_);
+    clipPolygon(tri, scratch, world, image_);
+    const Polygon& part = tri;
     if (part.empty()) continue;
     Vector3d centroid = Vector3d::Zero();
     for (const ClipVertex& v : part) centroid += v.coord;
