@@ -14,6 +14,7 @@
 #include "modeling/geometry/placed_exact_surface.h"
 #include "modeling/geometry/unit_plane.h"
 #include "modeling/geometry/primitive_bounds.h"
+#include "modeling/scene/json_location.h"
 #include "modeling/scene/scene_origin.h"
 #include "modeling/scene/view_volume.h"
 #include "modeling/scene/strict_json.h"
@@ -358,7 +359,10 @@ std::vector<Primitive> buildObject(const JsonNode& o, ObjectContext& parent, int
   return std::move(built.prims);
 }
 
-Scene parseScene(const std::string& text, const std::string& file, const std::string& directory,
+namespace {
+
+// parseScene without the text positions of its errors.
+Scene buildScene(const std::string& text, const std::string& file, const std::string& directory,
                  const Limits& limits, const ViewCulling& culling) {
   const json doc = parseStrictJson(text, file);
   const JsonNode root(doc, "", std::make_shared<const std::string>(file));
@@ -402,6 +406,21 @@ Scene parseScene(const std::string& text, const std::string& file, const std::st
     readObject(objects[i], i, scene, materials, directory, limits, view ? &*view : nullptr, screen);
   root.finish();
   return scene;
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& file, const std::string& directory,
+                 const Limits& limits, const ViewCulling& culling) {
+  try {
+    return buildScene(text, file, directory, limits, culling);
+  } catch (const SceneError& e) {
+    // An error in this scene's text gets the line and column of the value its path names.
+    // Syntax errors carry theirs already; errors of the files a scene names (OBJ, PDB) are
+    // about those files.
+    if (e.file() != file || e.problem().rfind("JSON syntax error", 0) == 0) throw;
+    throw SceneError(e.file(), e.jsonPath(), withTextPosition(e.problem(), text, e.jsonPath()));
+  }
 }
 
 std::string readSceneText(const std::string& path, const Limits& limits) {

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "modeling/scene/json_location.h"
 #include "modeling/scene/json_node.h"
 #include "modeling/scene/plain_json.h"
 #include "modeling/scene/scene_error.h"
@@ -11,20 +12,6 @@ namespace qacc {
 namespace {
 
 using nlohmann::json;
-
-void lineColumn(const std::string& text, std::size_t byte, std::size_t& line, std::size_t& col) {
-  line = 1;
-  col = 1;
-  const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
-  for (std::size_t i = 0; i < end; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
-  }
-}
 
 // Builds the DOM and keeps, for every open object or array, where the next value goes and
 // its JSON path element.
@@ -75,12 +62,12 @@ class StrictBuilder {
       if (pos != std::string::npos) detail = detail.substr(pos + 2);
       throw SceneError(file_, nextPath(), "number is not finite (" + detail + ")");
     }
-    std::size_t line, col;
-    lineColumn(text_, position, line, col);
+    // nlohmann's position counts the byte it stopped on from 1.
+    const TextPosition at = textPosition(text_, position > 0 ? position - 1 : 0);
     const auto pos = detail.find("syntax error");
     if (pos != std::string::npos) detail = detail.substr(pos);
-    throw SceneError(file_, "/", "JSON syntax error at line " + std::to_string(line) + ", column " +
-                                    std::to_string(col) + ": " + detail);
+    throw SceneError(file_, "/", "JSON syntax error at line " + std::to_string(at.line) + ", column " +
+                                    std::to_string(at.column) + ": " + detail);
   }
 
  private:

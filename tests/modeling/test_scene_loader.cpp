@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <iterator>
 #include <set>
@@ -54,6 +55,10 @@ void expectError(const std::string& text, const std::string& path, const std::st
     EXPECT_EQ(e.jsonPath(), path) << msg;
     EXPECT_NE(msg.find(problem), std::string::npos) << msg;
     EXPECT_EQ(msg.rfind("test.json: " + path + ": ", 0), 0u) << msg;
+    // Every error of the scene's text gives its line and column: syntax errors where the parser
+    // stopped, the others where the value their path names starts.
+    static const std::regex located(R"(: JSON syntax error at line [0-9]+, column [0-9]+: |\(line [0-9]+, column [0-9]+\)$)");
+    EXPECT_TRUE(std::regex_search(msg, located)) << msg;
   }
 }
 
