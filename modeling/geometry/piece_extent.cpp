@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "modeling/geometry/partial_pivot_solve3.h"
 #include "modeling/geometry/stable_roots.h"
 
 namespace qacc {
@@ -57,7 +58,7 @@ void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Vector4d& a, const Ei
   if (!(d.norm() > 1e-12 * na.norm() * nb.norm())) return;
   Eigen::Matrix3d A;
   A << na.transpose(), nb.transpose(), d.transpose();
-  const Eigen::Vector3d X0 = A.partialPivLu().solve(Eigen::Vector3d(-a[3], -b[3], d.dot(ref)));
+  const Eigen::Vector3d X0 = partialPivotSolve3(A, Eigen::Vector3d(-a[3], -b[3], d.dot(ref)));  // = partialPivLu().solve
   if (!X0.allFinite()) return;
   const Eigen::Vector4d H0 = X0.homogeneous(), D(d.x(), d.y(), d.z(), 0);
   const double qa = D.dot(Q * D), qb = D.dot(Q * H0), qc = H0.dot(Q * H0);
