@@ -92,22 +92,25 @@ void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Vector4d& a, const Ei
 
 }  // namespace
 
+void addAxisCandidates(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref,
+                       int ax, Eigen::AlignedBox3d& ext) {
+  const Eigen::Matrix<double, 3, 4> G = Q.topRows<3>();  // ∇f / 2 = G X
+  // (a) ∇f parallel to the axis: the two other gradient components vanish.
+  const int o1 = ax == 0 ? 1 : 0, o2 = ax == 2 ? 1 : 2;
+  lineCandidates(Q, G.row(o1).transpose(), G.row(o2).transpose(), P, ref, ext);
+  // (b) on each face: ∇f · (n × axis) = 0.
+  const Eigen::Vector3d axis = Eigen::Vector3d::Unit(ax);
+  for (const auto& p : P) {
+    const Eigen::Vector3d m = p.head<3>().cross(axis);
+    if (m.norm() <= 1e-12 * p.head<3>().norm()) continue;  // face ⟂ axis: its edges bound it
+    lineCandidates(Q, p, (m.transpose() * G).transpose(), P, ref, ext);
+  }
+}
+
 Eigen::AlignedBox3d pieceExtent(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, bool solid,
                                 const Eigen::Vector3d& ref, int axes) {
-  const Eigen::Matrix<double, 3, 4> G = Q.topRows<3>();  // ∇f / 2 = G X
   Eigen::AlignedBox3d ext;  // empty
-  for (int ax = 0; ax < axes; ++ax) {
-    // (a) ∇f parallel to the axis: the two other gradient components vanish.
-    const int o1 = ax == 0 ? 1 : 0, o2 = ax == 2 ? 1 : 2;
-    lineCandidates(Q, G.row(o1).transpose(), G.row(o2).transpose(), P, ref, ext);
-    // (b) on each face: ∇f · (n × axis) = 0.
-    const Eigen::Vector3d axis = Eigen::Vector3d::Unit(ax);
-    for (const auto& p : P) {
-      const Eigen::Vector3d m = p.head<3>().cross(axis);
-      if (m.norm() <= 1e-12 * p.head<3>().norm()) continue;  // face ⟂ axis: its edges bound it
-      lineCandidates(Q, p, (m.transpose() * G).transpose(), P, ref, ext);
-    }
-  }
+  for (int ax = 0; ax < axes; ++ax) addAxisCandidates(Q, P, ref, ax, ext);
   // (c) each edge of the polytope against the surface.
   for (std::size_t i = 0; i < P.size(); ++i)
     for (std::size_t j = i + 1; j < P.size(); ++j) lineCandidates(Q, P[i], P[j], P, ref, ext);
