@@ -11,8 +11,11 @@ namespace qacc {
 bool insidePolytope(const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& v) {
   const Eigen::Vector4d X = v.homogeneous();
   for (const auto& p : P) {
+    // The tolerance is never negative: a point on the inner side needs no magnitude.
+    const double side = p.dot(X);
+    if (!(side > 0)) continue;
     const double mag = std::abs(p[0] * X[0]) + std::abs(p[1] * X[1]) + std::abs(p[2] * X[2]) + std::abs(p[3]);
-    if (p.dot(X) > 1e-9 * mag) return false;
+    if (side > 1e-9 * mag) return false;
   }
   return true;
 }
@@ -50,9 +53,10 @@ double cancelled(const Eigen::Matrix4d& Q, const Eigen::Vector4d& H) {
 }
 
 // Points of the line {a·X = 0, b·X = 0} on the quadric and inside P; a line lying on the
-// quadric contributes its ends in P.
-void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Vector4d& a, const Eigen::Vector4d& b,
-                    const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref, Eigen::AlignedBox3d& ext) {
+// quadric contributes its ends in P. Qa = |Q| (element-wise), computed once per piece.
+void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Matrix4d& Qa, const Eigen::Vector4d& a,
+                    const Eigen::Vector4d& b, const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref,
+                    Eigen::AlignedBox3d& ext) {
   const Eigen::Vector3d na = a.head<3>(), nb = b.head<3>();
   const Eigen::Vector3d d = na.cross(nb);
   if (!(d.norm() > 1e-12 * na.norm() * nb.norm())) return;
@@ -65,7 +69,6 @@ void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Vector4d& a, const Ei
   // Each coefficient against the magnitudes that cancelled to form it (|u|ᵀ|Q||v|), so that
   // a line far from the origin is not taken for a line on the quadric because the
   // quadric's terms in the large coordinates happen to be absent.
-  const Eigen::Matrix4d Qa = Q.cwiseAbs();
   const Eigen::Vector4d Da = D.cwiseAbs(), Ha = H0.cwiseAbs();
   if (std::abs(qa) <= 1e-13 * Da.dot(Qa * Da) && std::abs(qb) <= 1e-13 * Da.dot(Qa * Ha) &&
       std::abs(qc) <= 1e-13 * Ha.dot(Qa * Ha)) {
@@ -95,15 +98,16 @@ void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Vector4d& a, const Ei
 void addAxisCandidates(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref,
                        int ax, Eigen::AlignedBox3d& ext) {
   const Eigen::Matrix<double, 3, 4> G = Q.topRows<3>();  // ∇f / 2 = G X
+  const Eigen::Matrix4d Qa = Q.cwiseAbs();
   // (a) ∇f parallel to the axis: the two other gradient components vanish.
   const int o1 = ax == 0 ? 1 : 0, o2 = ax == 2 ? 1 : 2;
-  lineCandidates(Q, G.row(o1).transpose(), G.row(o2).transpose(), P, ref, ext);
+  lineCandidates(Q, Qa, G.row(o1).transpose(), G.row(o2).transpose(), P, ref, ext);
   // (b) on each face: ∇f · (n × axis) = 0.
   const Eigen::Vector3d axis = Eigen::Vector3d::Unit(ax);
   for (const auto& p : P) {
     const Eigen::Vector3d m = p.head<3>().cross(axis);
     if (m.norm() <= 1e-12 * p.head<3>().norm()) continue;  // face ⟂ axis: its edges bound it
-    lineCandidates(Q, p, (m.transpose() * G).transpose(), P, ref, ext);
+    lineCandidates(Q, Qa, p, (m.transpose() * G).transpose(), P, ref, ext);
   }
 }
 
@@ -112,8 +116,9 @@ Eigen::AlignedBox3d pieceExtent(const Eigen::Matrix4d& Q, const std::vector<Eige
   Eigen::AlignedBox3d ext;  // empty
   for (int ax = 0; ax < axes; ++ax) addAxisCandidates(Q, P, ref, ax, ext);
   // (c) each edge of the polytope against the surface.
+  const Eigen::Matrix4d Qa = Q.cwiseAbs();
   for (std::size_t i = 0; i < P.size(); ++i)
-    for (std::size_t j = i + 1; j < P.size(); ++j) lineCandidates(Q, P[i], P[j], P, ref, ext);
+    for (std::size_t j = i + 1; j < P.size(); ++j) lineCandidates(Q, Qa, P[i], P[j], P, ref, ext);
   // The singular point of a cone.
   const Eigen::Matrix3d E = Q.topLeftCorner<3, 3>();
   Eigen::FullPivLU<Eigen::Matrix3d> lu(E);
