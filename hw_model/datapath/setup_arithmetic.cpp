@@ -152,12 +152,13 @@ PrimitiveSetup setupPrimitive(const Scene& scene, int index, const Eigen::Matrix
   // (its operations are charged there) and, for identical images, by the emulator always.
   if (cfg.hierarchical_z) s.setupOps += depthFloorOperationCount(int(prim.clip.size()), s.facet);
 
-  const WindowPrimitive w = toWindow(prim, index, Minv, scene.width, scene.height);
+  Eigen::AlignedBox3d extentXY;  // the screen box's exact candidates, which the depth range reuses
+  const WindowPrimitive w = toWindow(prim, index, Minv, scene.width, scene.height, &extentXY);
   if (w.box.empty()) {
     s.culled = true;
     return s;
   }
-  s.zFloor = depthFloor(pieceDepthRange(prim, w, Minv, scene.width, scene.height), cfg);
+  s.zFloor = depthFloor(pieceDepthRange(prim, w, Minv, scene.width, scene.height, &extentXY), cfg);
   s.x0 = w.box.x0;
   s.y0 = w.box.y0;
   s.x1 = w.box.x1;

@@ -9,15 +9,15 @@ namespace qacc {
 PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads) {
   PixelTrace tr;
   const int n = int(setups.size());
-  tr.prims.resize(std::size_t(n));
   tr.rows.resize(std::size_t(n));
+  tr.first.assign(std::size_t(n) + 1, 0);
   std::vector<OverflowCounters> ovf(static_cast<std::size_t>(n));
   const int nt = threads > 0 ? threads : omp_get_max_threads();
+  // The spans of every row, and each primitive's pixel count.
 #pragma omp parallel for schedule(dynamic, 4) num_threads(nt)
   for (int i = 0; i < n; ++i) {
     const PrimitiveSetup& s = setups[std::size_t(i)];
     if (!s.visible) continue;
-    std::vector<TracedPixel>& out = tr.prims[std::size_t(i)];
     std::vector<RowSpans>& rows = tr.rows[std::size_t(i)];
     std::size_t count = 0;
     for (int y = s.y0; y < s.y1; ++y) {
@@ -28,9 +28,18 @@ PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const Hw
       for (int k = 0; k < r.n; ++k) count += std::size_t(r.s[k].x1 - r.s[k].x0);
       rows.push_back(r);
     }
-    out.reserve(count);
+    tr.first[std::size_t(i) + 1] = count;
+  }
+  for (std::size_t i = 0; i < std::size_t(n); ++i) tr.first[i + 1] += tr.first[i];
+  tr.pixels.resize(tr.first.back());
+  // The datapath along every span.
+#pragma omp parallel for schedule(dynamic, 4) num_threads(nt)
+  for (int i = 0; i < n; ++i) {
+    const PrimitiveSetup& s = setups[std::size_t(i)];
+    if (!s.visible) continue;
+    TracedPixel* out = tr.pixels.data() + tr.first[std::size_t(i)];
     PixelDatapath pp(s, cfg);
-    for (const RowSpans& r : rows) {
+    for (const RowSpans& r : tr.rows[std::size_t(i)]) {
       const int y = r.y;
       const Span* sp = r.s;
       for (int k = 0; k < r.n; ++k) {
@@ -38,13 +47,12 @@ PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const Hw
         for (int x = sp[k].x0; x < sp[k].x1; ++x) {
           const PixelOutcome o = pp.evaluate(ovf[std::size_t(i)]);
           pp.stepRight();
-          TracedPixel t;
+          TracedPixel& t = *out++;
           t.z = std::int64_t(o.z);
           t.cap = std::int16_t(o.cap);
           t.hit = o.hit;
           t.candidate = o.candidate;
           t.clipPasses = std::uint16_t(o.clipPasses);
-          out.push_back(t);
         }
       }
     }

@@ -34,9 +34,15 @@ struct RowSpans {  // a row of a primitive with at least one span
 };
 
 struct PixelTrace {
-  std::vector<std::vector<TracedPixel>> prims;  // indexed by primitive, traversal order
-  std::vector<std::vector<RowSpans>> rows;      // indexed by primitive: its non-empty rows
-  OverflowCounters overflow;                    // datapath overflows of all pixels
+  // Every primitive's pixels in one buffer (primitive i's are [first[i], first[i + 1]), in
+  // traversal order), so that the trace — tens of megabytes at 1920x1080 — is one block,
+  // returned whole to the system when the trace is released.
+  std::vector<TracedPixel> pixels;
+  std::vector<std::size_t> first;           // indexed by primitive, one past the last at the end
+  std::vector<std::vector<RowSpans>> rows;  // indexed by primitive: its non-empty rows
+  OverflowCounters overflow;                // datapath overflows of all pixels
+  // The k-th pixel the traversal issues for primitive `prim`.
+  const TracedPixel& pixel(int prim, int k) const { return pixels[first[std::size_t(prim)] + std::size_t(k)]; }
   static PixelTrace build(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads);
 };
 

@@ -22,7 +22,7 @@ bool PixelPipelineUnit::tick(std::uint64_t now) {
   if (stages_.canAccept() && in_.ready()) {
     const PixelToken t = in_.front();
     in_.receive();
-    const TracedPixel& o = trace_.prims[std::size_t(t.prim)][std::size_t(t.k)];
+    const TracedPixel& o = trace_.pixel(t.prim, t.k);
     ++px_.tested;
     px_.clip_passes += std::uint64_t(o.clipPasses);
     if (o.hit) {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "modeling/geometry/partial_pivot_solve3.h"
 #include "modeling/geometry/stable_roots.h"
 
 namespace qacc {
@@ -10,8 +11,11 @@ namespace qacc {
 bool insidePolytope(const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& v) {
   const Eigen::Vector4d X = v.homogeneous();
   for (const auto& p : P) {
+    // The tolerance is never negative: a point on the inner side needs no magnitude.
+    const double side = p.dot(X);
+    if (!(side > 0)) continue;
     const double mag = std::abs(p[0] * X[0]) + std::abs(p[1] * X[1]) + std::abs(p[2] * X[2]) + std::abs(p[3]);
-    if (p.dot(X) > 1e-9 * mag) return false;
+    if (side > 1e-9 * mag) return false;
   }
   return true;
 }
@@ -49,22 +53,22 @@ double cancelled(const Eigen::Matrix4d& Q, const Eigen::Vector4d& H) {
 }
 
 // Points of the line {a·X = 0, b·X = 0} on the quadric and inside P; a line lying on the
-// quadric contributes its ends in P.
-void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Vector4d& a, const Eigen::Vector4d& b,
-                    const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref, Eigen::AlignedBox3d& ext) {
+// quadric contributes its ends in P. Qa = |Q| (element-wise), computed once per piece.
+void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Matrix4d& Qa, const Eigen::Vector4d& a,
+                    const Eigen::Vector4d& b, const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref,
+                    Eigen::AlignedBox3d& ext) {
   const Eigen::Vector3d na = a.head<3>(), nb = b.head<3>();
   const Eigen::Vector3d d = na.cross(nb);
   if (!(d.norm() > 1e-12 * na.norm() * nb.norm())) return;
   Eigen::Matrix3d A;
   A << na.transpose(), nb.transpose(), d.transpose();
-  const Eigen::Vector3d X0 = A.partialPivLu().solve(Eigen::Vector3d(-a[3], -b[3], d.dot(ref)));
+  const Eigen::Vector3d X0 = partialPivotSolve3(A, Eigen::Vector3d(-a[3], -b[3], d.dot(ref)));  // = partialPivLu().solve
   if (!X0.allFinite()) return;
   const Eigen::Vector4d H0 = X0.homogeneous(), D(d.x(), d.y(), d.z(), 0);
   const double qa = D.dot(Q * D), qb = D.dot(Q * H0), qc = H0.dot(Q * H0);
   // Each coefficient against the magnitudes that cancelled to form it (|u|ᵀ|Q||v|), so that
   // a line far from the origin is not taken for a line on the quadric because the
   // quadric's terms in the large coordinates happen to be absent.
-  const Eigen::Matrix4d Qa = Q.cwiseAbs();
   const Eigen::Vector4d Da = D.cwiseAbs(), Ha = H0.cwiseAbs();
   if (std::abs(qa) <= 1e-13 * Da.dot(Qa * Da) && std::abs(qb) <= 1e-13 * Da.dot(Qa * Ha) &&
       std::abs(qc) <= 1e-13 * Ha.dot(Qa * Ha)) {
@@ -91,25 +95,30 @@ void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Vector4d& a, const Ei
 
 }  // namespace
 
+void addAxisCandidates(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref,
+                       int ax, Eigen::AlignedBox3d& ext) {
+  const Eigen::Matrix<double, 3, 4> G = Q.topRows<3>();  // ∇f / 2 = G X
+  const Eigen::Matrix4d Qa = Q.cwiseAbs();
+  // (a) ∇f parallel to the axis: the two other gradient components vanish.
+  const int o1 = ax == 0 ? 1 : 0, o2 = ax == 2 ? 1 : 2;
+  lineCandidates(Q, Qa, G.row(o1).transpose(), G.row(o2).transpose(), P, ref, ext);
+  // (b) on each face: ∇f · (n × axis) = 0.
+  const Eigen::Vector3d axis = Eigen::Vector3d::Unit(ax);
+  for (const auto& p : P) {
+    const Eigen::Vector3d m = p.head<3>().cross(axis);
+    if (m.norm() <= 1e-12 * p.head<3>().norm()) continue;  // face ⟂ axis: its edges bound it
+    lineCandidates(Q, Qa, p, (m.transpose() * G).transpose(), P, ref, ext);
+  }
+}
+
 Eigen::AlignedBox3d pieceExtent(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, bool solid,
                                 const Eigen::Vector3d& ref, int axes) {
-  const Eigen::Matrix<double, 3, 4> G = Q.topRows<3>();  // ∇f / 2 = G X
   Eigen::AlignedBox3d ext;  // empty
-  for (int ax = 0; ax < axes; ++ax) {
-    // (a) ∇f parallel to the axis: the two other gradient components vanish.
-    const int o1 = ax == 0 ? 1 : 0, o2 = ax == 2 ? 1 : 2;
-    lineCandidates(Q, G.row(o1).transpose(), G.row(o2).transpose(), P, ref, ext);
-    // (b) on each face: ∇f · (n × axis) = 0.
-    const Eigen::Vector3d axis = Eigen::Vector3d::Unit(ax);
-    for (const auto& p : P) {
-      const Eigen::Vector3d m = p.head<3>().cross(axis);
-      if (m.norm() <= 1e-12 * p.head<3>().norm()) continue;  // face ⟂ axis: its edges bound it
-      lineCandidates(Q, p, (m.transpose() * G).transpose(), P, ref, ext);
-    }
-  }
+  for (int ax = 0; ax < axes; ++ax) addAxisCandidates(Q, P, ref, ax, ext);
   // (c) each edge of the polytope against the surface.
+  const Eigen::Matrix4d Qa = Q.cwiseAbs();
   for (std::size_t i = 0; i < P.size(); ++i)
-    for (std::size_t j = i + 1; j < P.size(); ++j) lineCandidates(Q, P[i], P[j], P, ref, ext);
+    for (std::size_t j = i + 1; j < P.size(); ++j) lineCandidates(Q, Qa, P[i], P[j], P, ref, ext);
   // The singular point of a cone.
   const Eigen::Matrix3d E = Q.topLeftCorner<3, 3>();
   Eigen::FullPivLU<Eigen::Matrix3d> lu(E);

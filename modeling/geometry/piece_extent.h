@@ -24,6 +24,14 @@ namespace qacc {
 Eigen::AlignedBox3d pieceExtent(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, bool solid,
                                 const Eigen::Vector3d& ref, int axes);
 
+// Adds to `ext` the candidates of coordinate axis `ax` (the surface points where ∇f is
+// parallel to it, and those of each face's conic), the only ones pieceExtent(..., axes)
+// has that pieceExtent(..., ax) lacks when ax = axes - 1: the z extent of a piece whose x
+// and y extent is known costs only the z candidates. The box equals pieceExtent's: the
+// same points, extended in another order (a box's minimum and maximum do not depend on it).
+void addAxisCandidates(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref,
+                       int ax, Eigen::AlignedBox3d& ext);
+
 // Vertices of the polytope P ∩ {plane = 0} (all vertices of P when plane is null), each
 // inside P within a relative tolerance of 1e-9.
 std::vector<Eigen::Vector3d> polytopeVertices(const std::vector<Eigen::Vector4d>& P, const Eigen::Vector4d* plane);

@@ -120,21 +120,30 @@ static std::vector<Eigen::Vector3d> polytopeVerticesOnPlane(const std::vector<Ha
   return out;
 }
 
-static ScreenBox polytopeBoxOnPlane(const std::vector<HalfSpace>& clip, int width, int height,
-                             const Eigen::Vector4d* plane) {
+// The box of the vertices of the clip polyhedron ∩ view volume on `plane` (all when null).
+static Eigen::AlignedBox3d polytopeExtentOnPlane(const std::vector<HalfSpace>& clip, int width, int height,
+                                                 const Eigen::Vector4d* plane) {
   Eigen::AlignedBox3d ext;
   for (const auto& v : polytopeVerticesOnPlane(clip, width, height, plane)) ext.extend(v);
-  return pixelBox(ext, width, height);
+  return ext;
 }
 
 ScreenBox polytopeBox(const std::vector<HalfSpace>& clip, int width, int height) {
-  return polytopeBoxOnPlane(clip, width, height, nullptr);
+  return pixelBox(polytopeExtentOnPlane(clip, width, height, nullptr), width, height);
+}
+
+// The anchor of the candidate lines of a window-space piece: the middle of the view volume.
+static Eigen::Vector3d viewCentre(int width, int height) { return {width / 2.0, height / 2.0, 0.5}; }
+
+// The piece's extent from the candidates of x and y (pieceExtent, axes 2).
+static Eigen::AlignedBox3d pieceExtentXY(const Eigen::Matrix4d& Q, const std::vector<HalfSpace>& clip, bool solid,
+                                         int width, int height) {
+  return pieceExtent(Q, boundedPolytope(clip, width, height), solid, viewCentre(width, height), 2);
 }
 
 ScreenBox patchBox(const Eigen::Matrix4d& Q, const std::vector<HalfSpace>& clip, bool solid, int width,
                    int height) {
-  const Eigen::Vector3d ref(width / 2.0, height / 2.0, 0.5);
-  return pixelBox(pieceExtent(Q, boundedPolytope(clip, width, height), solid, ref, 2), width, height);
+  return pixelBox(pieceExtentXY(Q, clip, solid, width, height), width, height);
 }
 
 ScreenBox worldBoxToScreen(const Eigen::AlignedBox3d& wb, const Eigen::Matrix4d& M, int width, int height) {
@@ -155,18 +164,30 @@ ScreenBox worldBoxToScreen(const Eigen::AlignedBox3d& wb, const Eigen::Matrix4d&
 }
 
 DepthRange pieceDepthRange(const Primitive& prim, const WindowPrimitive& w, const Eigen::Matrix4d& Minv, int width,
-                           int height) {
+                           int height, const Eigen::AlignedBox3d* extentXY) {
   DepthRange r;
   if (prim.isPlanar() && !prim.solid) {
-    const Eigen::Vector4d pw = windowPlane(prim, Minv);
-    for (const auto& v : polytopeVerticesOnPlane(w.clip, width, height, &pw)) {
-      r.lo = std::min(r.lo, v.z());
-      r.hi = std::max(r.hi, v.z());
+    // The polygon's vertices: their z range, with the initial lo = 1, hi = 0 of an empty range.
+    Eigen::AlignedBox3d ext;
+    if (extentXY) {
+      ext = *extentXY;
+    } else {
+      const Eigen::Vector4d pw = windowPlane(prim, Minv);
+      ext = polytopeExtentOnPlane(w.clip, width, height, &pw);
+    }
+    if (!ext.isEmpty()) {
+      r.lo = std::min(r.lo, ext.min().z());
+      r.hi = std::max(r.hi, ext.max().z());
     }
     return r;
   }
-  const Eigen::Vector3d ref(width / 2.0, height / 2.0, 0.5);
-  const Eigen::AlignedBox3d ext = pieceExtent(w.Q, boundedPolytope(w.clip, width, height), w.solid, ref, 3);
+  Eigen::AlignedBox3d ext;
+  if (extentXY) {
+    ext = *extentXY;
+    addAxisCandidates(w.Q, boundedPolytope(w.clip, width, height), viewCentre(width, height), 2, ext);
+  } else {
+    ext = pieceExtent(w.Q, boundedPolytope(w.clip, width, height), w.solid, viewCentre(width, height), 3);
+  }
   if (!ext.isEmpty()) {
     r.lo = ext.min().z();
     r.hi = ext.max().z();
@@ -174,7 +195,8 @@ DepthRange pieceDepthRange(const Primitive& prim, const WindowPrimitive& w, cons
   return r;
 }
 
-WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& Minv, int width, int height) {
+WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& Minv, int width, int height,
+                         Eigen::AlignedBox3d* extentXY) {
   WindowPrimitive w;
   w.index = index;
   w.solid = prim.solid;
@@ -192,10 +214,14 @@ WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d
   }
   if (prim.isPlanar() && !prim.solid) {
     const Eigen::Vector4d pw = windowPlane(prim, Minv);
-    w.box = polytopeBoxOnPlane(w.clip, width, height, &pw);
+    const Eigen::AlignedBox3d ext = polytopeExtentOnPlane(w.clip, width, height, &pw);
+    if (extentXY) *extentXY = ext;
+    w.box = pixelBox(ext, width, height);
     return w;
   }
-  const ScreenBox piece = patchBox(w.Q, w.clip, w.solid, width, height);
+  const Eigen::AlignedBox3d ext = pieceExtentXY(w.Q, w.clip, w.solid, width, height);
+  if (extentXY) *extentXY = ext;
+  const ScreenBox piece = pixelBox(ext, width, height);
   if (w.solid && !(w.a() > 0)) {
     w.box = piece;  // caps can show where the line never meets the surface
   } else {

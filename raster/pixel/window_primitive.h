@@ -46,7 +46,11 @@ struct WindowPrimitive {
 };
 
 // Window-space form of `prim` for a width x height image; M = world → window, Minv = M⁻¹.
-WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& Minv, int width, int height);
+// `extentXY`, when given, receives the window-space extent the screen box was made from (a
+// planar primitive's polygon vertices, or the piece's x and y candidates), which
+// pieceDepthRange then completes with the z candidates alone.
+WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& Minv, int width, int height,
+                         Eigen::AlignedBox3d* extentXY = nullptr);
 
 // Pixels covering the window-space projection of the clipped piece itself: the exact x and y
 // extents of (surface ∩ clip polyhedron ∩ view volume), or of (solid ∩ ...) when `solid`,
@@ -59,12 +63,13 @@ ScreenBox patchBox(const Eigen::Matrix4d& Q, const std::vector<HalfSpace>& clip,
 // The window depth range [lo, hi] of the same set as the screen box (the clipped piece, or
 // the solid's part of the clip polyhedron, or a planar primitive's polygon, inside the view
 // volume), from the same exact candidates (Lagrange, modeling/geometry/piece_extent.h) along
-// z; lo > hi when the set is empty. `w` is toWindow(prim, ...).
+// z; lo > hi when the set is empty. `w` is toWindow(prim, ...); `extentXY`, when given, is
+// the extent that toWindow returned for it (the same range, from fewer candidates).
 struct DepthRange {
   double lo = 1, hi = 0;
 };
 DepthRange pieceDepthRange(const Primitive& prim, const WindowPrimitive& w, const Eigen::Matrix4d& Minv, int width,
-                           int height);
+                           int height, const Eigen::AlignedBox3d* extentXY = nullptr);
 // Pixels whose centres can satisfy Δ >= 0 (exact extent of the conic region, widened by one
 // pixel against rounding), clamped to the screen; the whole screen when the region is unbounded.
 ScreenBox conicBox(const Conic& delta, int width, int height);

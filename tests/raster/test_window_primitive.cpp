@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 #include "modeling/scene/camera.h"
 #include "modeling/geometry/natural_quadrics.h"
+#include "modeling/loader/scene_loader.h"
 #include "raster/pixel/pixel_hit.h"
 #include "raster/pixel/window_primitive.h"
 
@@ -101,4 +103,39 @@ TEST(WindowPrimitive, ConicBoxOfAnEllipseIsExact) {
   EXPECT_EQ(b.x1, 54);
   EXPECT_EQ(b.y0, 37);
   EXPECT_EQ(b.y1, 43);
+}
+
+// The depth range completed from the screen box's own candidates (toWindow's extentXY, the
+// z candidates alone added) is the range computed from scratch, bit for bit, and asking
+// for the extent changes no box: every primitive of scenes with spheres, clipped
+// cylinders and cones, solids, planar facets, degree-reduced patches and csg leaves.
+TEST(WindowPrimitive, DepthRangeFromTheBoxCandidatesEqualsTheFullOne) {
+  int planar = 0, solid = 0, checked = 0;
+  for (const char* name : {"sphereflake", "molecule", "gallery", "cylinders", "vase_g0", "character", "quartic",
+                           "csg/csg_mechanical"}) {
+    Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/" + name + ".json");
+    for (const auto& [W, H] : {std::pair{160, 120}, std::pair{1920, 1080}}) {
+      const Eigen::Matrix4d Minv = scene.camera.worldToWindow(W, H).inverse();
+      for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+        const Primitive& prim = scene.primitives[i];
+        Eigen::AlignedBox3d ext;
+        const WindowPrimitive w = toWindow(prim, int(i), Minv, W, H, &ext);
+        const WindowPrimitive plain = toWindow(prim, int(i), Minv, W, H);
+        ASSERT_EQ(w.box.x0, plain.box.x0) << name << " primitive " << i;
+        ASSERT_EQ(w.box.y0, plain.box.y0) << name << " primitive " << i;
+        ASSERT_EQ(w.box.x1, plain.box.x1) << name << " primitive " << i;
+        ASSERT_EQ(w.box.y1, plain.box.y1) << name << " primitive " << i;
+        const DepthRange full = pieceDepthRange(prim, w, Minv, W, H);
+        const DepthRange reused = pieceDepthRange(prim, w, Minv, W, H, &ext);
+        ASSERT_EQ(full.lo, reused.lo) << name << " primitive " << i << " at " << W << "x" << H;
+        ASSERT_EQ(full.hi, reused.hi) << name << " primitive " << i << " at " << W << "x" << H;
+        checked += full.lo <= full.hi;
+        planar += prim.isPlanar() && !prim.solid;
+        solid += prim.solid;
+      }
+    }
+  }
+  EXPECT_GT(checked, 5000);
+  EXPECT_GT(planar, 0);
+  EXPECT_GT(solid, 0);
 }

@@ -5,11 +5,15 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 
+#include "modeling/loader/scene_loader.h"
+#include "raster/reference/reference_renderer.h"
+#include "tools/engines/reference_cache.h"
 #include "tools/engines/render_job.h"
 
 namespace fs = std::filesystem;
@@ -104,4 +108,48 @@ TEST(AccuracyReference, CacheOptionsWithoutAnAccuracyLineAreRefused) {
   EXPECT_THROW(runRenderJob(off), std::invalid_argument);
   off.use_cache = true;
   EXPECT_NO_THROW(runRenderJob(off));
+}
+
+TEST(AccuracyReference, FrameFileReadWithOrWithoutPrimitiveIds) {
+  const fs::path scene = writeScene("d.json", 1.0);
+  const FrameBuffer ref = renderReference(loadScene(scene.string()), 1);
+  const std::string path = (tempDir() / "d.frame").string();
+  writeFrameBuffer(path, ref);
+  FrameBuffer all, lean;
+  ASSERT_TRUE(readFrameBuffer(path, all));
+  ASSERT_TRUE(readFrameBuffer(path, lean, false));
+  for (const FrameBuffer* f : {&all, &lean}) {
+    EXPECT_EQ(f->width, ref.width);
+    EXPECT_EQ(f->height, ref.height);
+    EXPECT_EQ(f->color.data, ref.color.data);
+    EXPECT_TRUE(std::equal(f->depth.begin(), f->depth.end(), ref.depth.begin(), ref.depth.end()));
+    EXPECT_TRUE(std::equal(f->object.begin(), f->object.end(), ref.object.begin(), ref.object.end()));
+  }
+  EXPECT_TRUE(std::equal(all.primitive.begin(), all.primitive.end(), ref.primitive.begin(), ref.primitive.end()));
+  EXPECT_TRUE(lean.primitive.empty());
+  // A file shorter or longer than its header says is refused either way.
+  const auto size = fs::file_size(path);
+  for (const std::uintmax_t wrong : {size - 1, size + 1}) {
+    const std::string bad = (tempDir() / "bad.frame").string();
+    fs::copy_file(path, bad, fs::copy_options::overwrite_existing);
+    fs::resize_file(bad, wrong);
+    FrameBuffer f;
+    EXPECT_FALSE(readFrameBuffer(bad, f)) << wrong;
+    EXPECT_FALSE(readFrameBuffer(bad, f, false)) << wrong;
+  }
+}
+
+TEST(AccuracyReference, TheCachedReferenceOfTheAccuracyLineHasNoPrimitiveIds) {
+  const fs::path scene = writeScene("e.json", 1.0);
+  const RenderJob job = hwJob(scene);
+  runRenderJob(job);  // stores the frame
+  ReferenceCache cache(job.cache_dir);
+  const std::string text = readSceneText(scene.string()), dir = sceneDirectory(scene.string());
+  const auto never = []() -> Scene { throw std::logic_error("the frame should come from the cache"); };
+  const FrameBuffer lean = cache.get(text, dir, 48, 36, never, 1, false);
+  const FrameBuffer all = cache.get(text, dir, 48, 36, never, 1);
+  EXPECT_EQ(cache.hits(), 2u);
+  EXPECT_TRUE(lean.primitive.empty());
+  EXPECT_EQ(all.primitive.size(), all.pixels());
+  EXPECT_EQ(lean.color.data, all.color.data);
 }

@@ -20,7 +20,8 @@ struct EngineOptions {
   std::string shading;      // facet shading mode (facets)
   bool report_accuracy = true;  // hw, hw-cycle, facets: compare with the reference after rendering
   // Where the accuracy line's reference frame comes from: empty renders it
-  // (renderReference); `render` and `batch` serve it from the ReferenceCache.
+  // (renderReference); `render` and `batch` serve it from the ReferenceCache, without its
+  // primitive ids (the accuracy metrics read colour, depth and objects).
   std::function<FrameBuffer(const Scene&)> accuracy_reference;
   Limits limits;            // loading and tessellation bounds (--max-*)
 };

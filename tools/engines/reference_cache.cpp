@@ -88,7 +88,7 @@ std::string ReferenceCache::key(const std::string& sceneText, const std::string&
 }
 
 FrameBuffer ReferenceCache::get(const std::string& sceneText, const std::string& sceneDir, int width, int height,
-                                const std::function<Scene()>& scene, int threads) {
+                                const std::function<Scene()>& scene, int threads, bool primitiveIds) {
   const std::string k = key(sceneText, sceneDir, width, height);
   const fs::path frame = fs::path(dir_) / (k + ".frame");
   FrameBuffer fb;
@@ -97,9 +97,11 @@ FrameBuffer ReferenceCache::get(const std::string& sceneText, const std::string&
     s.width = width;
     s.height = height;
     ++renders_;
-    return renderReference(s, threads);
+    fb = renderReference(s, threads);
+    if (!primitiveIds) fb.primitive = {};
+    return fb;
   }
-  if (readFrameBuffer(frame.string(), fb) && fb.width == width && fb.height == height) {
+  if (readFrameBuffer(frame.string(), fb, primitiveIds) && fb.width == width && fb.height == height) {
     ++hits_;
     return fb;
   }
@@ -116,6 +118,7 @@ FrameBuffer ReferenceCache::get(const std::string& sceneText, const std::string&
   writePng((fs::path(dir_) / (k + ".png")).string(), fb.color);
   fs::rename(tmp, frame, ec);
   if (ec) throw std::invalid_argument(frame.string() + ": cannot store the reference frame: " + ec.message());
+  if (!primitiveIds) fb.primitive = {};
   return fb;
 }
 
@@ -137,7 +140,7 @@ void writeFrameBuffer(const std::string& path, const FrameBuffer& fb) {
   if (!out) throw std::invalid_argument(path + ": cannot write");
 }
 
-bool readFrameBuffer(const std::string& path, FrameBuffer& fb) {
+bool readFrameBuffer(const std::string& path, FrameBuffer& fb, bool primitiveIds) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
   char magic[8];
@@ -146,16 +149,26 @@ bool readFrameBuffer(const std::string& path, FrameBuffer& fb) {
   if (!in.read(reinterpret_cast<char*>(size), sizeof size) || size[0] <= 0 || size[1] <= 0 ||
       (long long)size[0] * size[1] > (1LL << 28))
     return false;
-  FrameBuffer f(size[0], size[1], {0, 0, 0});
-  const std::size_t n = f.pixels();
+  const std::size_t n = std::size_t(size[0]) * std::size_t(size[1]);
+  // Colour, depth, object and primitive ids: the file must be exactly that long.
+  const std::streamoff header = std::streamoff(sizeof kMagic + sizeof size);
+  const std::streamoff body = std::streamoff(n * (3 + sizeof(double) + 2 * sizeof(std::int32_t)));
+  in.seekg(0, std::ios::end);
+  if (!in || in.tellg() != header + body) return false;
+  in.seekg(header);
+  // Every pixel is read, so nothing is cleared first.
+  FrameBuffer f;
+  f.width = size[0];
+  f.height = size[1];
+  f.color = Image8::uninitialised(size[0], size[1], 3);
   f.depth.resize(n);
   f.object.resize(n);
-  f.primitive.resize(n);
+  if (primitiveIds) f.primitive.resize(n);
   in.read(reinterpret_cast<char*>(f.color.data.data()), std::streamsize(f.color.data.size()));
   in.read(reinterpret_cast<char*>(f.depth.data()), std::streamsize(n * sizeof(double)));
   in.read(reinterpret_cast<char*>(f.object.data()), std::streamsize(n * sizeof(std::int32_t)));
-  in.read(reinterpret_cast<char*>(f.primitive.data()), std::streamsize(n * sizeof(std::int32_t)));
-  if (!in || in.peek() != std::char_traits<char>::eof()) return false;
+  if (primitiveIds) in.read(reinterpret_cast<char*>(f.primitive.data()), std::streamsize(n * sizeof(std::int32_t)));
+  if (!in) return false;
   fb = std::move(f);
   return true;
 }

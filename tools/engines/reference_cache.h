@@ -25,9 +25,12 @@ class ReferenceCache {
   // `sceneDir`) at width x height.
   static std::string key(const std::string& sceneText, const std::string& sceneDir, int width, int height);
   // The reference frame of the scene parsed from sceneText at width x height: from the
-  // cache, or made by `scene()` (called only on a miss), rendered and stored.
+  // cache, or made by `scene()` (called only on a miss), rendered and stored. With
+  // `primitiveIds` false the frame comes without its primitive ids (`primitive` empty),
+  // for a caller that reads colour, depth and objects only, such as the accuracy line: a
+  // frame-sized buffer (4 bytes per pixel) it would not use is neither read nor kept.
   FrameBuffer get(const std::string& sceneText, const std::string& sceneDir, int width, int height,
-                  const std::function<Scene()>& scene, int threads);
+                  const std::function<Scene()>& scene, int threads, bool primitiveIds = true);
   // Renders every reference and stores none (measures what the cache saves).
   void disable() { disabled_ = true; }
   std::size_t hits() const { return hits_; }
@@ -39,8 +42,10 @@ class ReferenceCache {
   bool disabled_ = false;
 };
 
-// Exact binary form of a frame buffer (KEY.frame); read returns false for a missing or bad file.
+// Exact binary form of a frame buffer (KEY.frame); read returns false for a missing or bad
+// file (any size but the one its header implies), and leaves out the primitive ids when
+// `primitiveIds` is false.
 void writeFrameBuffer(const std::string& path, const FrameBuffer& fb);
-bool readFrameBuffer(const std::string& path, FrameBuffer& fb);
+bool readFrameBuffer(const std::string& path, FrameBuffer& fb, bool primitiveIds = true);
 
 }  // namespace qacc

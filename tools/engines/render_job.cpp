@@ -38,7 +38,7 @@ RenderJobResult runRenderJob(const RenderJob& job) {
     const std::string dir = sceneDirectory(job.scene_path);
     cacheKey = ReferenceCache::key(text, dir, out.scene.width, out.scene.height);
     options.accuracy_reference = [&cache, text, dir, threads = job.options.threads](const Scene& s) {
-      return cache->get(text, dir, s.width, s.height, [&s] { return s; }, threads);
+      return cache->get(text, dir, s.width, s.height, [&s] { return s; }, threads, /*primitiveIds=*/false);
     };
   }
   out.result = runEngine(job.engine, out.scene, options);
