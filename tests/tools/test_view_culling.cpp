@@ -15,11 +15,14 @@
 // quarter of its cells, --width/--height culls against the final aspect ratio.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -281,4 +284,77 @@ TEST(ViewCulling, WidthAndHeightCullAgainstTheFinalAspect) {
   EngineOptions eo;
   eo.report_accuracy = false;
   EXPECT_EQ(difference(runEngine("hw", wide, eo).fb, runEngine("hw", all, eo).fb), "");
+}
+
+// A facets-only sweep, longer than the suite's (run by hand:
+// build/tests/test_tools --gtest_also_run_disabled_tests --gtest_filter='*FacetsOnlySweep*'):
+// the facets engine at level 6 on 64x48 images, the sweep's random views with seed 99991, more
+// views per scene than the suite's every-tenth-view facets check (QACC_FACETS_SWEEP, e.g.
+// "bspline_g1:150,torus:50", chooses the scenes and counts; the default below). Every
+// difference is printed with its camera and classified: accepted only where culling removed
+// nothing but spurious surface (onlySpuriousFacets), otherwise a failure.
+TEST(ViewCulling, DISABLED_FacetsOnlySweep) {
+  if (!facetRendererAvailable()) GTEST_SKIP() << facetRendererMissingMessage();
+  std::vector<std::pair<std::string, int>> plan = {{"bspline_g1", 150}, {"torus", 50}, {"quartic", 50}, {"quintic", 50}};
+  if (const char* spec = std::getenv("QACC_FACETS_SWEEP")) {
+    plan.clear();
+    std::string s = spec;
+    for (std::size_t at = 0; at < s.size();) {
+      const std::size_t comma = std::min(s.find(',', at), s.size());
+      const std::string item = s.substr(at, comma - at);
+      const std::size_t colon = item.find(':');
+      ASSERT_NE(colon, std::string::npos) << "QACC_FACETS_SWEEP: '" << item << "' is not SCENE:VIEWS";
+      plan.emplace_back(item.substr(0, colon), std::stoi(item.substr(colon + 1)));
+      at = comma + 1;
+    }
+  }
+  EngineOptions eo;
+  eo.threads = 1;
+  eo.report_accuracy = false;
+  EngineOptions facetOptions = eo;
+  facetOptions.level = 6;
+  for (const auto& [name, views] : plan) {
+    SCOPED_TRACE(name);
+    const fs::path path = fs::path(QACC_SOURCE_DIR) / "scenes" / (name + ".json");
+    nlohmann::json doc = nlohmann::json::parse(readSceneText(path.string()));
+    doc["image"]["width"] = kW;
+    doc["image"]["height"] = kH;
+    const bool defaultLights = !doc.contains("lights");
+    const std::string dir = path.parent_path().string();
+    const Scene full = parseScene(doc.dump(), path.string(), dir, Limits{}, ViewCulling{false, 0, 0});
+    std::mt19937 rng(99991u);
+    int same = 0, spurious = 0, unexplained = 0;
+    for (int k = 0; k < views; ++k) {
+      nlohmann::json v = doc;
+      v["camera"] = randomCamera(doc.at("camera"), rng, k);
+      const Scene culled = parseScene(v.dump(), path.string(), dir);
+      Scene unculled = full;
+      unculled.camera = culled.camera;
+      if (defaultLights) unculled.lights = Scene::defaultLights(unculled.camera);
+      const FrameBuffer a = runEngine("facets", culled, facetOptions).fb;
+      const FrameBuffer b = runEngine("facets", unculled, facetOptions).fb;
+      const std::string d = difference(a, b);
+      if (d.empty()) {
+        ++same;
+        continue;
+      }
+      const FrameBuffer reference = runEngine("reference", unculled, eo).fb;
+      int pixels = 0;
+      const std::size_t c = std::size_t(a.color.channels);
+      for (std::size_t i = 0; i < a.object.size(); ++i) {
+        bool differs = a.object[i] != b.object[i] || !(a.depth[i] == b.depth[i]);
+        for (std::size_t j = 0; j < c; ++j) differs = differs || a.color.data[i * c + j] != b.color.data[i * c + j];
+        pixels += differs;
+      }
+      const bool accepted = onlySpuriousFacets(a, b, reference);
+      (accepted ? spurious : unexplained)++;
+      std::printf("%s view %d: %s (%d pixels), %zu of %zu primitives, %s; camera %s\n", name.c_str(), k, d.c_str(),
+                  pixels, culled.primitives.size(), unculled.primitives.size(),
+                  accepted ? "only spurious surface removed" : "UNEXPLAINED", v["camera"].dump().c_str());
+      EXPECT_TRUE(accepted) << name << " view " << k << ": " << d;
+    }
+    std::printf("%s: %d views, %d identical, %d only spurious surface removed, %d unexplained\n", name.c_str(), views,
+                same, spurious, unexplained);
+    std::fflush(stdout);
+  }
 }
