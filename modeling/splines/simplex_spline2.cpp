@@ -179,17 +179,11 @@ std::vector<SimplexSpline2::Cell> SimplexSpline2::cells(const ViewVolume* view, 
   std::vector<std::size_t> near;
   std::optional<HeightFieldBound> bound;
   if (view) bound.emplace(*this);
-  std::vector<Eigen::Vector3d> prism;
   for (const WorkCell& triangle : work) {
     if (view) {
-      // The triangle's prism over the range of F holds its surface (height_field_bound.h).
-      const HeightFieldBound::Range z = bound->over(triangle.poly);
-      prism.clear();
-      for (const Vec& v : triangle.poly) {
-        prism.emplace_back(v.x(), v.y(), z.lo);
-        prism.emplace_back(v.x(), v.y(), z.hi);
-      }
-      const bool mayBeSeen = view->mayContain(prism);
+      // The prisms of the triangle (or of its pieces) over safe ranges of F hold its surface
+      // (height_field_bound.h).
+      const bool mayBeSeen = bound->mayReach(triangle.poly, *view);
       if (count) count->keep(mayBeSeen);
       if (!mayBeSeen) continue;
     }

@@ -34,14 +34,21 @@ PieceInView::PieceInView(const ScreenView& view) : view_(view) {
 
 bool PieceInView::surelyInView(const Primitive& prim, const TriangleMesh3& mesh, std::size_t surfaceTriangles) const {
   const std::size_t n = std::min(surfaceTriangles, mesh.triangles.size());
-  auto inView = [&](const Vector3d& x) { return view_.onScreen(x, kInViewMarginPixels) && insideClipRegion(prim, x); };
+  const Quadric q = prim.quadric.normalized();
+  // On the quadric up to rounding: a surface vertex of the tessellation is not always (a piece
+  // tessellated into triangles across the screen has vertices far from its surface).
+  auto onSurface = [&](const Vector3d& s) {
+    return s.allFinite() && std::abs(q.eval(s)) <= 1e-9 * q.gradient(s).norm() * (1.0 + s.norm());
+  };
+  auto inView = [&](const Vector3d& x) {
+    return view_.onScreen(x, kInViewMarginPixels) && insideClipRegion(prim, x) && onSurface(x);
+  };
   for (std::size_t t = 0; t < n; ++t)
     for (int k = 0; k < 3; ++k)
       if (inView(mesh.positions[std::size_t(mesh.triangles[t][std::size_t(k)])])) return true;
   Domain world;
   world.linear = true;
   world.position = [](const Vector3d& p) { return p; };
-  const Quadric q = prim.quadric.normalized();
   Polygon tri, scratch;
   for (std::size_t t = 0; t < n; ++t) {
     tri.assign(3, ClipVertex{});
@@ -69,10 +76,7 @@ bool PieceInView::surelyInView(const Primitive& prim, const TriangleMesh3& mesh,
     std::vector<Vector3d> tries{centroid};
     for (const ClipVertex& v : part) tries.push_back(v.coord + 0.1 * (centroid - v.coord));
     for (const Vector3d& x : tries) {
-      const Vector3d s = closestPointOnQuadric(q, x);
-      const Vector3d g = q.gradient(s);
-      const bool onSurface = s.allFinite() && std::abs(q.eval(s)) <= 1e-9 * g.norm() * (1.0 + s.norm());
-      if (onSurface && inView(s)) return true;
+      if (inView(closestPointOnQuadric(q, x))) return true;
     }
   }
   return false;

@@ -7,8 +7,11 @@
 // stitched only between such pieces (shared_boundaries.h, tessellateScene), so a kept
 // piece's triangles never depend on the neighbours culling removed.
 //
-// The points tried: the piece's surface vertices, then, for each surface triangle that
-// crosses the image, the centroid of its part inside the image moved onto the surface
+// The points tried: the piece's surface vertices that lie on its quadric (up to rounding: a
+// tessellation can leave surface vertices far from the surface, and such a vertex on screen
+// proves nothing — on bspline_g1 it made pieces whose exact bounds miss the view count as in
+// it, so culling them changed a kept neighbour's stitched facets), then, for each surface
+// triangle that crosses the image, the centroid of its part inside the image moved onto the surface
 // (Newton projection along the gradient) — so that a piece larger than a zoomed-in view, with
 // no vertex on screen, is still found. A piece whose facets cross the image but whose surface
 // does not come within the margin is not stitched (nor would culling keep it).

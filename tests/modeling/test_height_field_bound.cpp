@@ -2,12 +2,16 @@
 // and the view culling it drives (SimplexSpline2::cells with a view): with random control
 // values, every sampled value of F over a polygon, and of every cell's polynomial over its
 // closed polygon, lies inside the polygon's range — near the triangulation's boundary (no
-// display domain, where the basis is not a partition of unity) and inside it; and a view
+// display domain) and inside it, with knot clouds small and large; also where the basis is
+// not a partition of unity far from the boundary (knot clouds of 0.9 x the shortest edge),
+// which the convex hull of the coefficients, the bound used there before, missed; and a view
 // drops only cells whose surface projects outside the image.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "modeling/splines/height_field_bound.h"
 #include "modeling/splines/simplex_spline2.h"
@@ -52,12 +56,13 @@ bool inTriangle(const std::vector<Vector2d>& tri, const Vector2d& p) {
 
 TEST(HeightFieldBound, HoldsEverySampledValueOfRandomSplines) {
   std::mt19937 rng(13);
-  int hull = 0, interval = 0, samples = 0;
-  for (bool g1 : {false, true})
+  int samples = 0;
+  // G0 knots sit on their vertices; G1 clouds of 0.2 and 0.6 x the shortest incident edge.
+  for (const auto& [radius, g1] : std::vector<std::pair<double, bool>>{{0.2, false}, {0.2, true}, {0.6, true}})
     for (bool domain : {false, true})
       for (int trial = 0; trial < 3; ++trial) {
         const TriangleGrid g = triangleGrid(4, -2, 2);
-        SimplexSpline2 s(2, g.v, g.t, knotClouds(g.v, g.t, 2, g1, 0.2));
+        SimplexSpline2 s(2, g.v, g.t, knotClouds(g.v, g.t, 2, g1, radius));
         if (domain) s.setDomain(Eigen::AlignedBox2d(Vector2d(-1.5, -1.5), Vector2d(1.5, 1.5)));
         // Positive values show a sum of the basis below 1 near the boundary; mixed signs
         // and a large offset the rest.
@@ -70,7 +75,6 @@ TEST(HeightFieldBound, HoldsEverySampledValueOfRandomSplines) {
           const std::vector<Vector2d> tri = {s.vertices()[std::size_t(t[0])], s.vertices()[std::size_t(t[1])],
                                              s.vertices()[std::size_t(t[2])]};
           const HeightFieldBound::Range r = bound.over(tri);
-          (r.convexHull ? hull : interval)++;
           for (int k = 0; k < 50; ++k) {
             const Vector2d p = pointIn(tri, rng, true);
             const double f = s.eval(p);
@@ -101,10 +105,51 @@ TEST(HeightFieldBound, HoldsEverySampledValueOfRandomSplines) {
           }
         }
       }
-  // Both bounds were exercised: the convex hull inside, the intervals near the boundary.
-  EXPECT_GT(hull, 50);
-  EXPECT_GT(interval, 50);
-  std::printf("%d samples, %d triangles by the convex hull, %d by intervals\n", samples, hull, interval);
+  EXPECT_GT(samples, 50000);
+  std::printf("%d samples\n", samples);
+}
+
+TEST(HeightFieldBound, HoldsWhereTheBasisIsNotAPartitionOfUnity) {
+  // Knot clouds of 0.9 x the shortest incident edge: far inside the triangulation (farther
+  // than the clouds' reach from its boundary) the basis sums to more or less than 1 at some
+  // points. With every coefficient 1, F is that sum; the convex hull of the coefficients, [1, 1],
+  // missed it there.
+  const TriangleGrid g = triangleGrid(6, -3, 3);
+  SimplexSpline2 s(2, g.v, g.t, knotClouds(g.v, g.t, 2, true, 0.9));
+  s.setCoefficients(std::vector<std::vector<double>>(s.triangles().size(), std::vector<double>(6, 1.0)));
+  ASSERT_LT(s.knotReach(), 1.0);
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);  // beyond the reach from the boundary at ±3
+  Vector2d worst = Vector2d::Zero();
+  double excess = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const Vector2d p(u(rng), u(rng));
+    const double e = std::fabs(s.eval(p) - 1);
+    if (e > excess) excess = e, worst = p;
+  }
+  EXPECT_GT(excess, 1e-3) << "the basis is a partition of unity here: the test shows nothing";
+  const HeightFieldBound bound(s);
+  // Squares around the worst point, and every triangle of the grid, hold their sampled values.
+  for (double h : {0.001, 0.01, 0.1}) {
+    const std::vector<Vector2d> square = {worst + Vector2d(-h, -h), worst + Vector2d(h, -h), worst + Vector2d(h, h),
+                                          worst + Vector2d(-h, h)};
+    const HeightFieldBound::Range r = bound.over(square);
+    const double f = s.eval(worst);
+    EXPECT_GE(f, r.lo) << "square of half-side " << h << " at " << worst.transpose();
+    EXPECT_LE(f, r.hi) << "square of half-side " << h << " at " << worst.transpose();
+  }
+  for (const auto& t : s.triangles()) {
+    const std::vector<Vector2d> tri = {s.vertices()[std::size_t(t[0])], s.vertices()[std::size_t(t[1])],
+                                       s.vertices()[std::size_t(t[2])]};
+    const HeightFieldBound::Range r = bound.over(tri);
+    for (int k = 0; k < 200; ++k) {
+      const Vector2d p = pointIn(tri, rng, true);
+      const double f = s.eval(p);
+      ASSERT_GE(f, r.lo) << "at " << p.transpose();
+      ASSERT_LE(f, r.hi) << "at " << p.transpose();
+    }
+  }
+  std::printf("the basis sums to 1 %+.4f at (%.4f, %.4f)\n", s.eval(worst) - 1, worst.x(), worst.y());
 }
 
 TEST(HeightFieldBound, ViewCullingDropsOnlyCellsOutsideTheImage) {

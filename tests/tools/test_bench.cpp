@@ -1,4 +1,5 @@
-// `qacc bench --json` (the fields docs/PERFORMANCE.md is kept from) and `--no-accuracy`
+// `qacc bench --json` (the fields docs/PERFORMANCE.md is kept from; --zoomed-fov, the zoomed
+// view's build and frames beside the full one's) and `--no-accuracy`
 // (render and batch: no reference render for the accuracy line; refused by engines that
 // print none), end to end through the command line.
 #include <gtest/gtest.h>
@@ -9,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <sys/wait.h>
 
 namespace {
 
@@ -52,6 +55,44 @@ TEST(BenchCommand, JsonHasEveryFieldPerSceneAndThreadCount) {
   ASSERT_EQ(doc.at("scaling").size(), 1u);
   EXPECT_GT(doc["scaling"][0].at("hw_speedup").get<double>(), 0.0);
   EXPECT_NE(text.find("1 -> 2 threads"), std::string::npos) << text;
+}
+
+TEST(BenchCommand, ZoomedFovBenchesTheZoomedViewBesideTheFullOne) {
+  const std::string json = (std::filesystem::path(QACC_BINARY_DIR) / "bench_zoomed_test.json").string();
+  std::filesystem::remove(json);
+  std::string text;
+  ASSERT_EQ(runQacc("bench " + kScenes + "torus.json --width 64 --height 48 --repeat 1 --threads 1 --no-cycle " +
+                        "--zoomed-fov 4 --json " + json,
+                    "bench_zoomed_test", text),
+            0)
+      << text;
+  std::ifstream in(json);
+  ASSERT_TRUE(in) << text;
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  ASSERT_EQ(doc.at("runs").size(), 2u);
+  const nlohmann::json &full = doc["runs"][0], &zoomed = doc["runs"][1];
+  EXPECT_EQ(full.at("view"), "full");
+  EXPECT_EQ(zoomed.at("view"), "zoomed");
+  EXPECT_EQ(doc.at("zoomed_fov_deg").get<double>(), 4.0);
+  // The zoomed view culls most of the torus's 1660 pieces; each view's build is timed.
+  EXPECT_EQ(full.at("primitives").get<std::size_t>(), 1660u);
+  EXPECT_LT(zoomed.at("primitives").get<std::size_t>(), 400u);
+  for (const auto* r : {&full, &zoomed}) EXPECT_GT(r->at("build_ms").get<double>(), 0.0);
+  EXPECT_NE(text.find("build ms"), std::string::npos) << text;
+  EXPECT_NE(text.find("zoomed"), std::string::npos) << text;
+}
+
+TEST(BenchCommand, ZoomedFovRefusesAnOrthographicCamera) {
+  const std::filesystem::path scene = std::filesystem::path(QACC_BINARY_DIR) / "bench_ortho.json";
+  std::ofstream(scene) << R"({"format": "qacc-scene/1", "camera": {"type": "orthographic"}, "objects": []})";
+  std::string text;
+  const int status = runQacc(
+      "bench " + scene.string() + " --width 16 --height 16 --repeat 1 --threads 1 --no-cycle --zoomed-fov 4", "bench_ortho",
+      text);
+  ASSERT_TRUE(WIFEXITED(status)) << text;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << text;
+  EXPECT_NE(text.find("bench_ortho.json: /camera/type: --zoomed-fov needs a perspective camera"), std::string::npos)
+      << text;
 }
 
 TEST(NoAccuracy, SkipsTheAccuracyLineOfTheHwEngines) {

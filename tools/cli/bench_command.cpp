@@ -1,5 +1,5 @@
 // qacc bench [SCENE...] [--width W --height H] [--config FILE] [--threads N,...] [--repeat N]
-//            [--no-cycle] [--json FILE]
+//            [--no-cycle] [--zoomed-fov DEG] [--json FILE]
 // Accelerator benchmark (issues 3 and 16): per scene (default: molecule and sphereflake at
 // 1920x1080) and per thread count (default: 1 and all cores), the reference, `hw` and
 // `hw-cycle` wall time per frame (best of --repeat, the engines alternating so that they
@@ -10,7 +10,11 @@
 // modeled frame time at the configured clock; the header gives the configuration's
 // silicon cost (cost_model.h) and the load average. Then the ratios the performance
 // targets are stated in (docs/PERFORMANCE.md): hw against the reference at each thread
-// count, and each engine from the first thread count to the last. --json FILE writes all
+// count, and each engine from the first thread count to the last. Each scene's build (read,
+// parse, model, culled to the view: "build ms", once) is timed too; --zoomed-fov DEG benches
+// every scene a second time with its perspective camera's fov_y_deg set to DEG, the build
+// and the frames of the zoomed view beside the full one's (docs/SCENES.md "View culling").
+// --json FILE writes all
 // of it with the machine (CPU model, cores); --out OUT writes the runs as OUT.json and
 // OUT.csv rows, as `reduce` and `sweep` do. Nothing is asserted.
 #include <nlohmann/json.hpp>
@@ -30,6 +34,7 @@
 #include "hw_model/report/cost_model.h"
 #include "hw_model/report/stats_file.h"
 #include "modeling/loader/scene_loader.h"
+#include "modeling/scene/scene_error.h"
 #include "raster/reference/reference_renderer.h"
 #include "tools/cli/commands.h"
 #include "tools/report/build_info.h"
@@ -48,6 +53,7 @@ struct BenchArgs {
   std::vector<int> threads;
   int repeat = 3;
   bool cycle = true;
+  double zoomed_fov = 0;  // > 0: each scene also with fov_y_deg = zoomed_fov
   Limits limits;
   bool view_cull = true;
   std::string out;   // OUT.json and OUT.csv, one row per scene and thread count
@@ -56,6 +62,8 @@ struct BenchArgs {
 
 struct BenchRun {
   std::string scene;
+  std::string view = "full";  // or "zoomed"
+  double buildMs = 0;         // the scene's read, parse and build
   std::size_t primitives = 0;
   int threads = 0;
   double refMs = 1e300, hwMs = 1e300, cycleMs = 1e300;
@@ -78,6 +86,17 @@ std::string cpuModel() {
       if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
     }
   return "unknown";
+}
+
+// The scene text with its perspective camera's vertical field of view set to `fov` degrees.
+std::string withFieldOfView(const std::string& text, const std::string& path, double fov) {
+  nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+  // Text that is not a scene with a camera object goes to the loader as it is, for its error.
+  if (doc.is_discarded() || !doc.is_object() || !doc.contains("camera") || !doc["camera"].is_object()) return text;
+  const nlohmann::json& type = doc["camera"].contains("type") ? doc["camera"]["type"] : nlohmann::json("perspective");
+  if (type != "perspective") throw SceneError(path, "/camera/type", "--zoomed-fov needs a perspective camera");
+  doc["camera"]["fov_y_deg"] = fov;
+  return doc.dump();
 }
 
 double loadAverage() {
@@ -116,6 +135,8 @@ BenchRun benchOne(const Scene& scene, const HwConfig& cfg, int threads, int repe
 
 nlohmann::json toJson(const BenchRun& b) {
   return {{"scene", b.scene},
+          {"view", b.view},
+          {"build_ms", b.buildMs},
           {"primitives", b.primitives},
           {"threads", b.threads},
           {"ref_ms", b.refMs},
@@ -145,33 +166,44 @@ void runBench(const BenchArgs& a) {
   std::printf("config %s, %d MHz, P=%d, %.0f kGE (cost model), %dx%d, best of %d; %s, %d cores, load %.2f\n",
               cfg.name.c_str(), int(cfg.clock_mhz), cfg.pipelines, CostModel::of(cfg).totalGe() / 1e3, a.width,
               a.height, a.repeat, cpuModel().c_str(), cores, load0);
-  std::printf("%-14s %7s %3s %9s %9s %7s %12s %10s %11s %9s %11s %9s %9s\n", "scene", "prims", "thr", "ref ms",
-              "hw ms", "ref/hw", "tested px/s", "cycle ms", "cycles", "trace ms", "loop cyc/s", "slowdown",
-              "frame ms");
+  std::printf("%-14s %-6s %9s %7s %3s %9s %9s %7s %12s %10s %11s %9s %11s %9s %9s\n", "scene", "view", "build ms",
+              "prims", "thr", "ref ms", "hw ms", "ref/hw", "tested px/s", "cycle ms", "cycles", "trace ms",
+              "loop cyc/s", "slowdown", "frame ms");
   std::vector<BenchRun> runs;
-  for (const std::string& path : scenes) {
-    Scene scene = loadScene(path, a.limits, ViewCulling{a.view_cull, a.width, a.height});
-    applyImageSize(scene, a.width, a.height);
-    for (int t : threads) {
-      const BenchRun b = benchOne(scene, cfg, t, a.repeat, a.cycle);
-      std::printf("%-14s %7zu %3d %9.1f %9.1f %7.2f %12.3g %10.1f %11llu %9.1f %11.3g %9.2f %9.3f\n",
-                  b.scene.c_str(), b.primitives, b.threads, b.refMs, b.hwMs, b.refMs / b.hwMs, b.testedPerSecond(),
-                  b.cycleMs, (unsigned long long)b.cycles, b.traceS * 1e3, b.loopRate(),
-                  b.frameMs > 0 ? b.cycleMs / b.frameMs : 0.0, b.frameMs);
-      std::fflush(stdout);
-      runs.push_back(b);
+  std::vector<double> fovs = {0};  // 0: the scene's own camera
+  if (a.zoomed_fov > 0) fovs.push_back(a.zoomed_fov);
+  for (const std::string& path : scenes)
+    for (double fov : fovs) {
+      const auto t0 = std::chrono::steady_clock::now();
+      std::string text = readSceneText(path, a.limits);
+      if (fov > 0) text = withFieldOfView(text, path, fov);
+      Scene scene = parseScene(text, path, sceneDirectory(path), a.limits, ViewCulling{a.view_cull, a.width, a.height});
+      const double buildMs = wallMs(t0);
+      applyImageSize(scene, a.width, a.height);
+      for (int t : threads) {
+        BenchRun b = benchOne(scene, cfg, t, a.repeat, a.cycle);
+        b.view = fov > 0 ? "zoomed" : "full";
+        b.buildMs = buildMs;
+        std::printf("%-14s %-6s %9.1f %7zu %3d %9.1f %9.1f %7.2f %12.3g %10.1f %11llu %9.1f %11.3g %9.2f %9.3f\n",
+                    b.scene.c_str(), b.view.c_str(), b.buildMs, b.primitives, b.threads, b.refMs, b.hwMs,
+                    b.refMs / b.hwMs, b.testedPerSecond(), b.cycleMs, (unsigned long long)b.cycles, b.traceS * 1e3,
+                    b.loopRate(), b.frameMs > 0 ? b.cycleMs / b.frameMs : 0.0, b.frameMs);
+        std::fflush(stdout);
+        runs.push_back(b);
+      }
     }
-  }
-  // Scaling from the first thread count to the last, per scene and engine.
+  // Scaling from the first thread count to the last, per scene, view and engine.
   nlohmann::json scaling = nlohmann::json::array();
   if (threads.size() > 1)
     for (std::size_t i = 0; i < runs.size(); i += threads.size()) {
       const BenchRun& lo = runs[i];
       const BenchRun& hi = runs[i + threads.size() - 1];
-      std::printf("%s: %d -> %d threads: reference x%.2f, hw x%.2f%s\n", lo.scene.c_str(), lo.threads, hi.threads,
+      std::printf("%s (%s): %d -> %d threads: reference x%.2f, hw x%.2f%s\n", lo.scene.c_str(), lo.view.c_str(),
+                  lo.threads, hi.threads,
                   lo.refMs / hi.refMs, lo.hwMs / hi.hwMs,
                   a.cycle ? (", hw-cycle x" + std::to_string(lo.cycleMs / hi.cycleMs).substr(0, 4)).c_str() : "");
       scaling.push_back({{"scene", lo.scene},
+                         {"view", lo.view},
                          {"from_threads", lo.threads},
                          {"to_threads", hi.threads},
                          {"ref_speedup", lo.refMs / hi.refMs},
@@ -203,6 +235,7 @@ void runBench(const BenchArgs& a) {
   doc["width"] = a.width;
   doc["height"] = a.height;
   doc["repeat"] = a.repeat;
+  if (a.zoomed_fov > 0) doc["zoomed_fov_deg"] = a.zoomed_fov;
   doc["runs"] = nlohmann::json::array();
   for (const BenchRun& b : runs) doc["runs"].push_back(toJson(b));
   doc["scaling"] = scaling;
@@ -225,6 +258,9 @@ void addBenchCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--repeat", args->repeat, "Frames timed per engine (best is kept)")->capture_default_str()->check(CLI::Range(1, 100));
   cmd->add_flag("!--no-cycle", args->cycle, "Skip the hw-cycle run");
+  cmd->add_option("--zoomed-fov", args->zoomed_fov,
+                  "Also bench each scene zoomed: its perspective camera's fov_y_deg set to DEG")
+      ->check(CLI::Range(1e-3, 179.0));
   cmd->add_option("--json", args->json, "Also write the results as JSON (with the machine)");
   cmd->add_option("--out", args->out, "Write the table as OUT.json and OUT.csv");
   addLimitOptions(cmd, args->limits);
