@@ -6,8 +6,10 @@
 // index in range, one object / material / primitive index per triangle). Its GL draw
 // (OSMesa llvmpipe) is left out: every frame creates an OSMesa context, 350-400 ms under
 // ASan, and the draw only consumes the checked mesh (docs/FUZZING.md).
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -21,6 +23,19 @@
 
 namespace {
 
+// What the run did with its inputs, printed when it ends (libFuzzer's own statistics count
+// executions, not how many scenes the loader accepted and every engine then drew).
+struct RunCounts {
+  std::atomic<unsigned long long> inputs{0}, refused{0}, drawn{0}, over_triangle_budget{0};
+  ~RunCounts() {
+    std::fprintf(stderr,
+                 "fuzz_render: %llu inputs: %llu refused by the loader, %llu drawn by the reference, hw and "
+                 "hw-cycle and tessellated (%llu of them over the triangle budget)\n",
+                 inputs.load(), refused.load(), drawn.load(), over_triangle_budget.load());
+  }
+};
+RunCounts counts;
+
 // The facets engine's tessellation (tools/engines/facet_engine.cpp: facetTessellationOptions)
 // at a level small enough for thousands of scenes a minute, bounded as --max-triangles bounds it.
 void tessellateLikeFacets(const qacc::Scene& scene) {
@@ -32,6 +47,7 @@ void tessellateLikeFacets(const qacc::Scene& scene) {
   try {
     mesh = qacc::tessellateScene(scene, to);
   } catch (const std::length_error&) {
+    ++counts.over_triangle_budget;
     return;  // over the triangle budget: refused, as the facets engine refuses it
   }
   const std::size_t n = mesh.size();
@@ -48,6 +64,7 @@ void tessellateLikeFacets(const qacc::Scene& scene) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  ++counts.inputs;
   qacc::Limits limits;
   limits.max_input_bytes = 1 << 20;
   limits.max_primitives = 2000;
@@ -57,6 +74,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     scene = qacc::parseScene(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json",
                              QACC_SOURCE_DIR "/scenes", limits);
   } catch (const qacc::SceneError&) {
+    ++counts.refused;
     return 0;
   }
   scene.width = 24;
@@ -67,5 +85,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const qacc::HwRender b = qacc::renderHwCycle(scene, cfg, 1);
   if (!(a.fb.color.data == b.fb.color.data) || a.fb.object != b.fb.object) std::abort();
   tessellateLikeFacets(scene);
+  ++counts.drawn;
   return 0;
 }
