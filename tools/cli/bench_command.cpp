@@ -36,6 +36,7 @@
 #include "modeling/loader/scene_loader.h"
 #include "modeling/scene/scene_error.h"
 #include "raster/reference/reference_renderer.h"
+#include "tools/bench/load_average.h"
 #include "tools/cli/commands.h"
 #include "tools/report/build_info.h"
 #include "tools/engines/image_size.h"
@@ -97,11 +98,6 @@ std::string withFieldOfView(const std::string& text, const std::string& path, do
   if (type != "perspective") throw SceneError(path, "/camera/type", "--zoomed-fov needs a perspective camera");
   doc["camera"]["fov_y_deg"] = fov;
   return doc.dump();
-}
-
-double loadAverage() {
-  double l[1] = {0};
-  return getloadavg(l, 1) == 1 ? l[0] : -1.0;
 }
 
 BenchRun benchOne(const Scene& scene, const HwConfig& cfg, int threads, int repeat, bool cycle) {

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "modeling/loader/scene_loader.h"
+#include "tools/bench/load_average.h"
 #include "tools/bench/sphere_grid_scene.h"
 #include "tools/cli/commands.h"
 
@@ -43,11 +44,6 @@ double processCpuSeconds() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-double loadAverage() {
-  double l[1] = {0};
-  return getloadavg(l, 1) == 1 ? l[0] : -1.0;
 }
 
 void runBenchLoad(const BenchLoadArgs& a) {
