@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "hw_model/engines/cycle_engine.h"
 #include "hw_model/engines/functional_engine.h"
@@ -20,6 +21,7 @@
 #include "modeling/scene/scene_error.h"
 #include "modeling/tessellation/tessellation.h"
 #include "raster/reference/reference_renderer.h"
+#include "fuzz/json_mutator.h"
 
 namespace {
 
@@ -57,7 +59,11 @@ void tessellateLikeFacets(const qacc::Scene& scene) {
   for (std::size_t t = 0; t < n; ++t) {
     for (int v : mesh.triangles[t])
       if (v < 0 || std::size_t(v) >= mesh.positions.size()) std::abort();
-    if (mesh.primitive[t] < 0 || std::size_t(mesh.primitive[t]) >= scene.primitives.size()) std::abort();
+    // -1: a triangle of the exact surface of an object that has no piece (view culling removed
+    // them all; tessellation.cpp draws that surface all the same).
+    if (mesh.primitive[t] < -1 || (mesh.primitive[t] >= 0 && std::size_t(mesh.primitive[t]) >= scene.primitives.size()))
+      std::abort();
+    if (mesh.object[t] < 0 || std::size_t(mesh.object[t]) >= scene.objects.size()) std::abort();
   }
 }
 
@@ -87,4 +93,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   tessellateLikeFacets(scene);
   ++counts.drawn;
   return 0;
+}
+
+// JSON-aware mutations (fuzz/json_mutator.h), with the format's words from the dictionary.
+extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,
+                                               unsigned int seed) {
+  static const std::vector<std::string> words = qacc::fuzz::dictionaryWords(QACC_SOURCE_DIR "/fuzz/scene.dict");
+  return qacc::fuzz::mutateJson(data, size, max_size, seed, words);
 }

@@ -4,9 +4,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "modeling/loader/scene_loader.h"
 #include "modeling/scene/scene_error.h"
+#include "fuzz/json_mutator.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   // Small limits: the fuzzer looks for crashes, not for the scenes that are merely slow.
@@ -21,4 +23,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const qacc::SceneError&) {
   }
   return 0;
+}
+
+// JSON-aware mutations (fuzz/json_mutator.h), with the format's words from the dictionary.
+extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,
+                                               unsigned int seed) {
+  static const std::vector<std::string> words = qacc::fuzz::dictionaryWords(QACC_SOURCE_DIR "/fuzz/scene.dict");
+  return qacc::fuzz::mutateJson(data, size, max_size, seed, words);
 }
