@@ -163,8 +163,12 @@ std::vector<SimplexSpline2::Cell> SimplexSpline2::cells(const ViewVolume* view, 
   const int G = std::max(1, int(std::sqrt(double(work.size()))));
   const Vec lo = all.isEmpty() ? Vec::Zero() : Vec(all.min() - Vec::Constant(margin));
   const Vec size = all.isEmpty() ? Vec::Ones() : Vec(all.sizes() + Vec::Constant(2 * margin));
+  // Clamped before the conversion to int: with coordinates near 1e300 the quotient is out of
+  // int's range or not a number (a conversion of either is undefined behaviour).
   auto bucket = [&](double v, int axis) {
-    return std::clamp(int(std::floor((v - lo[axis]) / size[axis] * G)), 0, G - 1);
+    const double t = std::floor((v - lo[axis]) / size[axis] * G);
+    if (!(t >= 0)) return 0;
+    return t >= double(G - 1) ? G - 1 : int(t);
   };
   std::vector<std::vector<std::size_t>> buckets(std::size_t(G) * std::size_t(G));
   for (std::size_t k = 0; k < segList.size(); ++k) {

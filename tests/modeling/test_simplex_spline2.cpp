@@ -177,3 +177,17 @@ TEST(SimplexSpline, BasisLeafBoundIsTheCompiledLeafCount) {
   EXPECT_LE(makeSpline(false).leafCount(), bound);
   EXPECT_EQ(SimplexSpline2::basisLeafBound(std::size_t(1) << 62, 2), SIZE_MAX);  // saturates
 }
+
+// Found by fuzz_render (JSON mutator): a vertex of the complex at -1e300 made the segment
+// buckets of the crossing test convert an out-of-range quotient to int, undefined behaviour
+// that UBSan stops on (the sanitized suite fails here without the clamp in simplex_spline2.cpp).
+TEST(SimplexSpline, AVertexNear1e300BuildsWithoutUndefinedBehaviour) {
+  const std::string text = R"({"format": "qacc-scene/1", "image": {"width": 64, "height": 48},
+    "camera": {"eye": [2.4, -3.6, 3.0], "target": [0, 0, 0], "up": [0, 0, 1], "fov_y_deg": 0.2, "near": 0.5, "far": 30},
+    "objects": [{"type": "bspline", "dimension": 2, "degree": 2, "continuity": "G0",
+                 "vertices": [[0, 0], [1, 0], [0, 1], [-1e300, 1]], "triangles": [[0, 1, 2], [1, 3, 2]],
+                 "coefficients": [[0, 0.2, 0.1, -1.0, 0.2, 0], [0.3, 0.2, 0.4, 0.1, 0.2, 0.5]],
+                 "transform": {"translate": [0.5, -0.5, 0]}}]})";
+  const Scene s = parseScene(text, "b.json", ".");
+  EXPECT_EQ(s.objects.size(), 1u);
+}
