@@ -93,12 +93,10 @@ void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Matrix4d& Qa, const E
   }
 }
 
-}  // namespace
-
-void addAxisCandidates(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref,
-                       int ax, Eigen::AlignedBox3d& ext) {
+// addAxisCandidates with Qa = |Q| given (pieceExtent computes it once for all its lines).
+void axisCandidates(const Eigen::Matrix4d& Q, const Eigen::Matrix4d& Qa, const std::vector<Eigen::Vector4d>& P,
+                    const Eigen::Vector3d& ref, int ax, Eigen::AlignedBox3d& ext) {
   const Eigen::Matrix<double, 3, 4> G = Q.topRows<3>();  // ∇f / 2 = G X
-  const Eigen::Matrix4d Qa = Q.cwiseAbs();
   // (a) ∇f parallel to the axis: the two other gradient components vanish.
   const int o1 = ax == 0 ? 1 : 0, o2 = ax == 2 ? 1 : 2;
   lineCandidates(Q, Qa, G.row(o1).transpose(), G.row(o2).transpose(), P, ref, ext);
@@ -111,12 +109,19 @@ void addAxisCandidates(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector
   }
 }
 
+}  // namespace
+
+void addAxisCandidates(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref,
+                       int ax, Eigen::AlignedBox3d& ext) {
+  axisCandidates(Q, Q.cwiseAbs(), P, ref, ax, ext);
+}
+
 Eigen::AlignedBox3d pieceExtent(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, bool solid,
                                 const Eigen::Vector3d& ref, int axes) {
   Eigen::AlignedBox3d ext;  // empty
-  for (int ax = 0; ax < axes; ++ax) addAxisCandidates(Q, P, ref, ax, ext);
-  // (c) each edge of the polytope against the surface.
   const Eigen::Matrix4d Qa = Q.cwiseAbs();
+  for (int ax = 0; ax < axes; ++ax) axisCandidates(Q, Qa, P, ref, ax, ext);
+  // (c) each edge of the polytope against the surface.
   for (std::size_t i = 0; i < P.size(); ++i)
     for (std::size_t j = i + 1; j < P.size(); ++j) lineCandidates(Q, Qa, P[i], P[j], P, ref, ext);
   // The singular point of a cone.
