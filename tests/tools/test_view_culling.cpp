@@ -151,6 +151,25 @@ bool onlyRemovedPiecesFacets(const FrameBuffer& culled, const FrameBuffer& uncul
   return true;
 }
 
+// A scene document loaded culled and unculled, both drawn by the facets engine at the sweep's
+// level on one thread: the regression views of the facets' independence from culling.
+struct FacetsCulledAndUnculled {
+  Scene culled, unculled;
+  FrameBuffer culledImage, unculledImage;
+};
+FacetsCulledAndUnculled facetsCulledAndUnculled(const nlohmann::json& doc, const fs::path& path) {
+  FacetsCulledAndUnculled r;
+  r.culled = parseScene(doc.dump(), path.string(), ".");
+  r.unculled = parseScene(doc.dump(), path.string(), ".", Limits{}, ViewCulling{false, 0, 0});
+  EngineOptions eo;
+  eo.threads = 1;
+  eo.report_accuracy = false;
+  eo.level = 6;  // the sweep's level
+  r.culledImage = runEngine("facets", r.culled, eo).fb;
+  r.unculledImage = runEngine("facets", r.unculled, eo).fb;
+  return r;
+}
+
 }  // namespace
 
 TEST(ViewCulling, CulledScenesRenderAsTheUnculledOnesFromRandomViews) {
@@ -254,15 +273,10 @@ TEST(ViewCulling, FacetsOfAKeptPieceDoNotDependOnItsCulledNeighbours) {
                    {"fov_y_deg", 1.18},
                    {"near", 0.5},
                    {"far", 50}};
-  const Scene culled = parseScene(doc.dump(), path.string(), ".");
-  const Scene unculled = parseScene(doc.dump(), path.string(), ".", Limits{}, ViewCulling{false, 0, 0});
-  ASSERT_LT(culled.primitives.size(), unculled.primitives.size());
-  EngineOptions eo;
-  eo.threads = 1;
-  eo.report_accuracy = false;
-  eo.level = 6;  // the sweep's level
-  EXPECT_EQ(difference(runEngine("facets", culled, eo).fb, runEngine("facets", unculled, eo).fb), "")
-      << culled.primitives.size() << " of " << unculled.primitives.size() << " primitives";
+  const FacetsCulledAndUnculled r = facetsCulledAndUnculled(doc, path);
+  ASSERT_LT(r.culled.primitives.size(), r.unculled.primitives.size());
+  EXPECT_EQ(difference(r.culledImage, r.unculledImage), "")
+      << r.culled.primitives.size() << " of " << r.unculled.primitives.size() << " primitives";
 }
 
 // Two views of bspline_g1 (found by ViewCulling.DISABLED_FacetsOnlySweep) where the loader's
@@ -286,18 +300,13 @@ TEST(ViewCulling, PiecesWhoseFacetsOnlyCrossTheViewAreNotStitched) {
     doc["image"]["width"] = kW;
     doc["image"]["height"] = kH;
     doc["camera"] = camera;
-    const Scene culled = parseScene(doc.dump(), path.string(), ".");
-    const Scene unculled = parseScene(doc.dump(), path.string(), ".", Limits{}, ViewCulling{false, 0, 0});
-    ASSERT_LT(culled.primitives.size(), unculled.primitives.size());
-    EngineOptions eo;
-    eo.threads = 1;
-    eo.report_accuracy = false;
-    eo.level = 6;  // the sweep's level
-    const FrameBuffer a = runEngine("facets", culled, eo).fb, b = runEngine("facets", unculled, eo).fb;
+    const FacetsCulledAndUnculled r = facetsCulledAndUnculled(doc, path);
+    ASSERT_LT(r.culled.primitives.size(), r.unculled.primitives.size());
     // Culling may only remove pixels drawn by the cells it removed (their facets off their
     // surface): no kept cell's pixel changes.
-    EXPECT_TRUE(onlyRemovedPiecesFacets(a, b, removedByCulling(culled, unculled)))
-        << difference(a, b) << "; " << culled.primitives.size() << " of " << unculled.primitives.size()
+    EXPECT_TRUE(onlyRemovedPiecesFacets(r.culledImage, r.unculledImage, removedByCulling(r.culled, r.unculled)))
+        << difference(r.culledImage, r.unculledImage) << "; " << r.culled.primitives.size() << " of "
+        << r.unculled.primitives.size()
         << " primitives, camera " << camera.dump();
   }
 }
