@@ -374,7 +374,15 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
     surface[i] = pieces[i].surface_triangles;
     if (inView[i]) meshes[i] = &pieces[i].mesh;
   }
-  tess::stitchSharedBoundaries(scene.primitives, meshes, surface);
+  tess::SharedBoundarySampling sampling;
+  if (options.pixel_error > 0) {
+    sampling.view = &view;
+    sampling.pixels = options.pixel_error;
+  } else {
+    sampling.chordError.resize(n);
+    for (std::size_t i = 0; i < n; ++i) sampling.chordError[i] = pieces[i].max_chord_error;
+  }
+  tess::stitchSharedBoundaries(scene.primitives, meshes, surface, sampling);
 
   // The report in scene order (its means are sums in that order), the exact surfaces' meshes
   // made in that order too; the meshes are listed in drawing order (slots), then each is

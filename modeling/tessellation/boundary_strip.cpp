@@ -1,0 +1,328 @@
+// A piece's mesh made to end on its shared polylines (boundary_strip.h).
+#include "modeling/tessellation/boundary_strip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <utility>
+
+#include "modeling/tessellation/piece_boundary.h"    // onPlaneWithinRounding
+#include "modeling/tessellation/surface_clipping.h"  // PointKey
+
+namespace qacc::tess {
+
+using Eigen::Vector3d;
+
+namespace {
+
+struct Path {
+  std::vector<Vector3d> points;
+  bool closed = false;
+};
+
+using Segment = std::pair<Vector3d, Vector3d>;
+
+// The segments joined where their ends are equal: open paths (from an end used once) and
+// closed loops; std::nullopt when a point ends more than two segments.
+std::optional<std::vector<Path>> chain(const std::vector<Segment>& segments) {
+  std::map<Vector3d, std::vector<Vector3d>, PointKey> next;
+  for (const auto& [a, b] : segments) {
+    next[a].push_back(b);
+    next[b].push_back(a);
+  }
+  for (const auto& [p, n] : next)
+    if (n.size() > 2) return std::nullopt;
+  std::map<Vector3d, bool, PointKey> used;
+  std::vector<Path> out;
+  auto walk = [&](const Vector3d& start) {
+    Path path;
+    Vector3d prev = start, at = start;
+    path.points.push_back(start);
+    used[start] = true;
+    for (;;) {
+      const std::vector<Vector3d>& n = next[at];
+      const Vector3d* step = nullptr;
+      for (const Vector3d& c : n)
+        if (!used[c] && !(path.points.size() >= 2 && c == prev)) {
+          step = &c;
+          break;
+        }
+      if (!step) {
+        // Back at the start: a loop.
+        path.closed = path.points.size() >= 3 && std::find(n.begin(), n.end(), start) != n.end();
+        break;
+      }
+      prev = at;
+      at = *step;
+      used[at] = true;
+      path.points.push_back(at);
+    }
+    out.push_back(std::move(path));
+  };
+  for (const auto& [p, n] : next)
+    if (n.size() == 1 && !used[p]) walk(p);
+  for (const auto& [p, n] : next)
+    if (!used[p]) walk(p);
+  return out;
+}
+
+// Cumulative arc length of a path, as fractions of its length (by index when it has none).
+std::vector<double> arcFractions(const std::vector<Vector3d>& p) {
+  std::vector<double> f(p.size(), 0.0);
+  for (std::size_t i = 1; i < p.size(); ++i) f[i] = f[i - 1] + (p[i] - p[i - 1]).norm();
+  const double total = f.empty() ? 0.0 : f.back();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    f[i] = total > 0 ? f[i] / total : (p.size() > 1 ? double(i) / double(p.size() - 1) : 0.0);
+  return f;
+}
+
+// The point at arc fraction t of a path.
+Vector3d atFraction(const std::vector<Vector3d>& p, const std::vector<double>& f, double t) {
+  for (std::size_t i = 1; i < p.size(); ++i)
+    if (f[i] >= t) {
+      const double w = f[i] > f[i - 1] ? (t - f[i - 1]) / (f[i] - f[i - 1]) : 0.0;
+      return p[i - 1] + w * (p[i] - p[i - 1]);
+    }
+  return p.back();
+}
+
+// How far apart two paths run (from their starts, by arc fraction).
+double pathDistance(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b) {
+  const std::vector<double> fa = arcFractions(a), fb = arcFractions(b);
+  double d = 0;
+  for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) d += (atFraction(a, fa, t) - atFraction(b, fb, t)).norm();
+  return d;
+}
+
+// A loop as the open path from its point nearest `to` round to that point again, in the
+// direction that runs nearest `along`.
+std::vector<Vector3d> openLoop(const std::vector<Vector3d>& loop, const Vector3d& to, const std::vector<Vector3d>& along) {
+  std::size_t start = 0;
+  for (std::size_t i = 1; i < loop.size(); ++i)
+    if ((loop[i] - to).squaredNorm() < (loop[start] - to).squaredNorm()) start = i;
+  std::vector<Vector3d> fwd, bwd;
+  for (std::size_t k = 0; k <= loop.size(); ++k) {
+    fwd.push_back(loop[(start + k) % loop.size()]);
+    bwd.push_back(loop[(start + loop.size() - k % loop.size()) % loop.size()]);
+  }
+  return pathDistance(fwd, along) <= pathDistance(bwd, along) ? fwd : bwd;
+}
+
+// Of the kept triangles (removed[t] == 0), only the largest set connected through shared
+// edges stays: an island cut off by the removal (a triangle or two between the strips) would
+// leave a second kept chain with no polyline of its own.
+void removeAllButLargest(const TriangleMesh3& mesh, std::size_t nsurf, std::vector<char>& removed) {
+  std::map<std::pair<Vector3d, Vector3d>, std::vector<std::size_t>,
+           bool (*)(const std::pair<Vector3d, Vector3d>&, const std::pair<Vector3d, Vector3d>&)>
+      byEdge([](const std::pair<Vector3d, Vector3d>& a, const std::pair<Vector3d, Vector3d>& b) {
+        if (a.first != b.first) return lexLess(a.first, b.first);
+        return lexLess(a.second, b.second);
+      });
+  auto pos = [&](std::size_t t, int k) -> const Vector3d& { return mesh.positions[std::size_t(mesh.triangles[t][k])]; };
+  for (std::size_t t = 0; t < nsurf; ++t) {
+    if (removed[t]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const Vector3d &a = pos(t, k), &b = pos(t, (k + 1) % 3);
+      byEdge[lexLess(b, a) ? std::pair{b, a} : std::pair{a, b}].push_back(t);
+    }
+  }
+  std::vector<int> component(nsurf, -1);
+  std::vector<std::size_t> sizes;
+  for (std::size_t t0 = 0; t0 < nsurf; ++t0) {
+    if (removed[t0] || component[t0] >= 0) continue;
+    const int c = int(sizes.size());
+    sizes.push_back(0);
+    std::vector<std::size_t> stack{t0};
+    component[t0] = c;
+    while (!stack.empty()) {
+      const std::size_t t = stack.back();
+      stack.pop_back();
+      ++sizes.back();
+      for (int k = 0; k < 3; ++k) {
+        const Vector3d &a = pos(t, k), &b = pos(t, (k + 1) % 3);
+        for (std::size_t u : byEdge[lexLess(b, a) ? std::pair{b, a} : std::pair{a, b}])
+          if (component[u] < 0) {
+            component[u] = c;
+            stack.push_back(u);
+          }
+      }
+    }
+  }
+  if (sizes.size() <= 1) return;
+  const int largest = int(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
+  for (std::size_t t = 0; t < nsurf; ++t)
+    if (!removed[t] && component[t] != largest) removed[t] = 1;
+}
+
+struct Strip {
+  const Quadric& q;
+  int winding;  // +1: triangles wound counter-clockwise about their normals, -1: clockwise
+  const std::map<Vector3d, Vector3d, PointKey>& keptNormals;
+  TriangleMesh3& out;
+
+  Vector3d normalAt(const Vector3d& p, const Vector3d& near) const {
+    auto it = keptNormals.find(p);
+    if (it != keptNormals.end()) return it->second;
+    Vector3d n = q.gradient(p);
+    n = n.norm() > 0 ? Vector3d(n.normalized()) : Vector3d::UnitZ();
+    auto ref = keptNormals.find(near);
+    if (ref != keptNormals.end() && n.dot(ref->second) < 0) n = -n;
+    return n;
+  }
+  void triangle(const Vector3d& a, const Vector3d& b, const Vector3d& c, const Vector3d& near) {
+    if (a == b || b == c || a == c) return;
+    const Vector3d na = normalAt(a, near), nb = normalAt(b, near), nc = normalAt(c, near);
+    const bool flip = winding * (b - a).cross(c - a).dot(na + nb + nc) < 0;
+    const int base = int(out.positions.size());
+    for (const auto& [p, n] : {std::pair{a, na}, flip ? std::pair{c, nc} : std::pair{b, nb},
+                               flip ? std::pair{b, nb} : std::pair{c, nc}}) {
+      out.positions.push_back(p);
+      out.normals.push_back(n);
+    }
+    out.triangles.push_back({base, base + 1, base + 2});
+  }
+  // Kept chain `in` and new boundary `o`, both from the same end.
+  void zip(const std::vector<Vector3d>& in, const std::vector<Vector3d>& o) {
+    const std::vector<double> fi = arcFractions(in), fo = arcFractions(o);
+    std::size_t a = 0, b = 0;
+    while (a + 1 < in.size() || b + 1 < o.size()) {
+      const bool onO = a + 1 >= in.size() || (b + 1 < o.size() && fo[b + 1] <= fi[a + 1]);
+      if (onO) {
+        triangle(in[a], o[b], o[b + 1], in[a]);
+        ++b;
+      } else {
+        triangle(in[a], o[b], in[a + 1], in[a]);
+        ++a;
+      }
+    }
+  }
+};
+
+}  // namespace
+
+bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vector<HalfSpace>& sharedPlanes,
+                      const std::vector<std::vector<Vector3d>>& polylines, const Quadric& q) {
+  if (polylines.empty()) return false;
+  const std::size_t nsurf = std::min(surface, mesh.triangles.size());
+  auto pos = [&](std::size_t t, int k) -> const Vector3d& { return mesh.positions[std::size_t(mesh.triangles[t][k])]; };
+  auto touches = [&](const Vector3d& x) {
+    for (const HalfSpace& h : sharedPlanes)
+      if (onPlaneWithinRounding(h, x)) return true;
+    return false;
+  };
+  std::vector<char> removed(nsurf, 0);
+  for (std::size_t t = 0; t < nsurf; ++t)
+    for (int k = 0; k < 3 && !removed[t]; ++k) removed[t] = touches(pos(t, k));
+  removeAllButLargest(mesh, nsurf, removed);
+
+  // Edges of the kept triangles used once that a removed triangle uses too: the inner chains.
+  using EdgeKey = std::pair<Vector3d, Vector3d>;
+  auto key = [](const Vector3d& a, const Vector3d& b) { return lexLess(b, a) ? EdgeKey{b, a} : EdgeKey{a, b}; };
+  struct EdgeLess {
+    bool operator()(const EdgeKey& a, const EdgeKey& b) const {
+      if (a.first != b.first) return lexLess(a.first, b.first);
+      return lexLess(a.second, b.second);
+    }
+  };
+  std::map<EdgeKey, int, EdgeLess> keptUse;
+  std::map<EdgeKey, bool, EdgeLess> removedEdge;
+  std::map<Vector3d, Vector3d, PointKey> keptNormals;
+  double windingSum = 0;
+  for (std::size_t t = 0; t < nsurf; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const EdgeKey e = key(pos(t, k), pos(t, (k + 1) % 3));
+      if (removed[t]) {
+        removedEdge[e] = true;
+      } else {
+        ++keptUse[e];
+        keptNormals.emplace(pos(t, k), mesh.normals[std::size_t(mesh.triangles[t][k])]);
+      }
+    }
+  for (std::size_t t = 0; t < nsurf; ++t) {
+    const Vector3d n = mesh.normals[std::size_t(mesh.triangles[t][0])] + mesh.normals[std::size_t(mesh.triangles[t][1])] +
+                       mesh.normals[std::size_t(mesh.triangles[t][2])];
+    windingSum += (pos(t, 1) - pos(t, 0)).cross(pos(t, 2) - pos(t, 0)).dot(n) > 0 ? 1 : -1;
+  }
+  std::vector<Segment> inner, outer;
+  for (const auto& [e, uses] : keptUse)
+    if (uses == 1 && removedEdge.count(e)) inner.push_back(e);
+  for (const auto& line : polylines)
+    for (std::size_t i = 0; i + 1 < line.size(); ++i)
+      if (line[i] != line[i + 1]) outer.push_back({line[i], line[i + 1]});
+  const auto in = chain(inner), out = chain(outer);
+  if (!in || !out || out->empty()) return false;
+
+  TriangleMesh3 strip;
+  Strip s{q, windingSum >= 0 ? 1 : -1, keptNormals, strip};
+  std::vector<bool> paired(in->size(), false);
+  for (const Path& o : *out) {
+    if (o.closed) {
+      // A loop: the kept loop nearest it, or a fan when nothing is kept.
+      int best = -1;
+      for (std::size_t k = 0; k < in->size(); ++k)
+        if ((*in)[k].closed && !paired[k]) best = best < 0 ? int(k) : -2;
+      if (best == -2) return false;
+      if (best < 0) {
+        if (!in->empty()) return false;
+        Vector3d c = Vector3d::Zero();
+        for (const Vector3d& p : o.points) c += p;
+        c = closestPointOnQuadric(q, c / double(o.points.size()));
+        std::vector<Vector3d> ring = o.points;
+        ring.push_back(o.points.front());
+        // Wound like the other triangles of the piece, by the surface's gradient.
+        for (std::size_t i = 0; i + 1 < ring.size(); ++i) s.triangle(c, ring[i], ring[i + 1], c);
+        continue;
+      }
+      paired[std::size_t(best)] = true;
+      std::vector<Vector3d> ring = o.points;
+      ring.push_back(o.points.front());
+      const std::vector<Vector3d> kept = openLoop((*in)[std::size_t(best)].points, ring.front(), ring);
+      s.zip(kept, ring);
+      continue;
+    }
+    // An open path: the open chain whose ends are nearest its ends.
+    int best = -1;
+    bool reversed = false;
+    double bestDist = 1e300;
+    for (std::size_t k = 0; k < in->size(); ++k) {
+      const Path& c = (*in)[k];
+      if (c.closed || paired[k]) continue;
+      const double fwd = (c.points.front() - o.points.front()).norm() + (c.points.back() - o.points.back()).norm();
+      const double bwd = (c.points.back() - o.points.front()).norm() + (c.points.front() - o.points.back()).norm();
+      if (std::min(fwd, bwd) < bestDist) {
+        bestDist = std::min(fwd, bwd);
+        best = int(k);
+        reversed = bwd < fwd;
+      }
+    }
+    if (best < 0) return false;
+    paired[std::size_t(best)] = true;
+    std::vector<Vector3d> kept = (*in)[std::size_t(best)].points;
+    if (reversed) std::reverse(kept.begin(), kept.end());
+    s.zip(kept, o.points);
+  }
+  for (bool p : paired)
+    if (!p) return false;
+
+  // Kept surface triangles, the strip, then the caps.
+  TriangleMesh3 result;
+  auto copy = [&](std::size_t t) {
+    const int base = int(result.positions.size());
+    for (int k = 0; k < 3; ++k) {
+      result.positions.push_back(pos(t, k));
+      result.normals.push_back(mesh.normals[std::size_t(mesh.triangles[t][k])]);
+    }
+    result.triangles.push_back({base, base + 1, base + 2});
+  };
+  for (std::size_t t = 0; t < nsurf; ++t)
+    if (!removed[t]) copy(t);
+  result.append(strip);
+  const std::size_t newSurface = result.triangles.size();
+  for (std::size_t t = nsurf; t < mesh.triangles.size(); ++t) copy(t);
+  mesh = std::move(result);
+  surface = newSurface;
+  return true;
+}
+
+}  // namespace qacc::tess

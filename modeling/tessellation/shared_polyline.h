@@ -1,0 +1,54 @@
+// The one polyline of a shared boundary (shared_boundaries.h): where two pieces of one object
+// meet on their common clip plane h (one piece has h, the other exactly h.opposite()), the
+// curve {q = 0} ∩ h restricted to both pieces' faces (their other clip planes) is sampled
+// once, so that both pieces' meshes end on the same vertices, bit for bit.
+//  - The ends are where the curve leaves the common face: on each line where h meets another
+//    clip plane of either piece, the roots of q along that line that lie inside every other
+//    plane of both pieces (within rounding) and where the curve crosses a plane of the face
+//    rather than touching it (a G1 cell's surface is tangent to faces of its tetrahedron).
+//    One end or none: the faces share no arc. More than two: the one pair whose arc's middle
+//    (the chord's midpoint moved onto the curve) lies inside the face — the others are where
+//    the curve passes through a corner of the face; with more than one such pair the curve
+//    enters the face more than once and is refused (no polyline).
+//  - Between two ends the curve is sampled by halving: the midpoint of a chord is moved onto
+//    the curve within h (Newton steps along the gradient's component in the plane) and the
+//    chord split there while its sagitta exceeds the tolerance (world units, or pixels in a
+//    view), up to kMaxSharedPolylineDepth halvings.
+// The arithmetic runs once per pair of pieces, on the quadric and planes of the pair's lower
+// primitive for the curve (the caller's canonical order), so the result is the same whichever
+// piece asks.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "modeling/geometry/half_space.h"
+#include "modeling/geometry/quadric.h"
+#include "modeling/scene/screen_view.h"
+
+namespace qacc::tess {
+
+constexpr int kMaxSharedPolylineDepth = 10;
+
+// The ends of the curve {q = 0} ∩ h within `face` (the other clip planes of both pieces):
+// none (the curve misses the common face or touches it at one point), two (one arc), or
+// std::nullopt when the curve has more than one arc on the face.
+std::optional<std::vector<Eigen::Vector3d>> sharedCurveEnds(const Quadric& q, const HalfSpace& h,
+                                                            const std::vector<HalfSpace>& face);
+
+// How finely: sagitta at most `world` (world units), and with a view at most `pixels` in it.
+struct PolylineTolerance {
+  double world = 0;
+  const ScreenView* view = nullptr;
+  double pixels = 0;
+};
+
+// The curve from `a` to `b` (both on it, ends of one arc) sampled to the tolerance, a and b
+// included as given; std::nullopt when a midpoint does not reach the curve or leaves `face`.
+std::optional<std::vector<Eigen::Vector3d>> sampleSharedCurve(const Quadric& q, const HalfSpace& h,
+                                                              const std::vector<HalfSpace>& face,
+                                                              const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                                              const PolylineTolerance& tol);
+
+}  // namespace qacc::tess
