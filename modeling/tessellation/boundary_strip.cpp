@@ -161,18 +161,17 @@ struct Strip {
   const std::map<Vector3d, Vector3d, PointKey>& keptNormals;
   TriangleMesh3& out;
 
-  Vector3d normalAt(const Vector3d& p, const Vector3d& near) const {
+  int gradientSign;  // +1: the piece's normals point along the quadric's gradient, -1: against
+
+  Vector3d normalAt(const Vector3d& p) const {
     auto it = keptNormals.find(p);
     if (it != keptNormals.end()) return it->second;
-    Vector3d n = q.gradient(p);
-    n = n.norm() > 0 ? Vector3d(n.normalized()) : Vector3d::UnitZ();
-    auto ref = keptNormals.find(near);
-    if (ref != keptNormals.end() && n.dot(ref->second) < 0) n = -n;
-    return n;
+    const Vector3d g = q.gradient(p);
+    return g.norm() > 0 ? Vector3d(double(gradientSign) * g.normalized()) : Vector3d::UnitZ();
   }
-  void triangle(const Vector3d& a, const Vector3d& b, const Vector3d& c, const Vector3d& near) {
+  void triangle(const Vector3d& a, const Vector3d& b, const Vector3d& c) {
     if (a == b || b == c || a == c) return;
-    const Vector3d na = normalAt(a, near), nb = normalAt(b, near), nc = normalAt(c, near);
+    const Vector3d na = normalAt(a), nb = normalAt(b), nc = normalAt(c);
     const bool flip = winding * (b - a).cross(c - a).dot(na + nb + nc) < 0;
     const int base = int(out.positions.size());
     for (const auto& [p, n] : {std::pair{a, na}, flip ? std::pair{c, nc} : std::pair{b, nb},
@@ -182,6 +181,37 @@ struct Strip {
     }
     out.triangles.push_back({base, base + 1, base + 2});
   }
+  // A closed loop (no point repeated) triangulated with the least total area (dynamic
+  // programming over its sub-polygons).
+  void polygon(const std::vector<Vector3d>& p) {
+    const std::size_t n = p.size();
+    if (n < 3) return;
+    std::vector<double> w(n * n, 0.0);
+    std::vector<std::size_t> arg(n * n, 0);
+    for (std::size_t len = 2; len < n; ++len)
+      for (std::size_t i = 0; i + len < n; ++i) {
+        const std::size_t j = i + len;
+        double best = 1e300;
+        for (std::size_t k = i + 1; k < j; ++k) {
+          const double c = w[i * n + k] + w[k * n + j] + 0.5 * (p[k] - p[i]).cross(p[j] - p[i]).norm();
+          if (c < best) {
+            best = c;
+            arg[i * n + j] = k;
+          }
+        }
+        w[i * n + j] = best;
+      }
+    std::vector<std::pair<std::size_t, std::size_t>> todo{{0, n - 1}};
+    while (!todo.empty()) {
+      const auto [i, j] = todo.back();
+      todo.pop_back();
+      if (j < i + 2) continue;
+      const std::size_t k = arg[i * n + j];
+      triangle(p[i], p[k], p[j]);
+      todo.push_back({i, k});
+      todo.push_back({k, j});
+    }
+  }
   // Kept chain `in` and new boundary `o`, both from the same end.
   void zip(const std::vector<Vector3d>& in, const std::vector<Vector3d>& o) {
     const std::vector<double> fi = arcFractions(in), fo = arcFractions(o);
@@ -189,15 +219,70 @@ struct Strip {
     while (a + 1 < in.size() || b + 1 < o.size()) {
       const bool onO = a + 1 >= in.size() || (b + 1 < o.size() && fo[b + 1] <= fi[a + 1]);
       if (onO) {
-        triangle(in[a], o[b], o[b + 1], in[a]);
+        triangle(in[a], o[b], o[b + 1]);
         ++b;
       } else {
-        triangle(in[a], o[b], in[a + 1], in[a]);
+        triangle(in[a], o[b], in[a + 1]);
         ++a;
       }
     }
   }
 };
+
+
+// Open new boundary paths joined to the chains of what is left (kept chains and the piece's
+// own edges on unshared planes), each end of a path to the nearest end of a chain (that end
+// replaced by the path's when within kMergeEnds, else joined by an edge); the loops this
+// closes triangulated one by one. False when a path is closed, a loop does not close or
+// holds no new boundary, or is longer than kMaxLoopPoints.
+bool fillLoops(const std::vector<Path>& out, const std::vector<Segment>& inner, const std::vector<Segment>& own,
+               Strip& s) {
+  std::vector<Segment> rest = inner;
+  rest.insert(rest.end(), own.begin(), own.end());
+  const auto left = chain(rest);
+  if (!left) return false;
+  std::vector<Vector3d> ends;
+  for (const Path& k : *left)
+    if (!k.closed) {
+      ends.push_back(k.points.front());
+      ends.push_back(k.points.back());
+    }
+  std::vector<Segment> all = rest;
+  std::map<Vector3d, bool, PointKey> isNew;
+  for (const Path& o : out) {
+    if (o.closed) return false;
+    for (std::size_t i = 0; i + 1 < o.points.size(); ++i) all.push_back({o.points[i], o.points[i + 1]});
+    for (const Vector3d& p : o.points) isNew[p] = true;
+    for (const Vector3d* e : {&o.points.front(), &o.points.back()}) {
+      std::size_t best = ends.size();
+      for (std::size_t k = 0; k < ends.size(); ++k)
+        if (best == ends.size() || (ends[k] - *e).squaredNorm() < (ends[best] - *e).squaredNorm()) best = k;
+      if (best == ends.size()) return false;
+      const Vector3d k = ends[best];
+      ends.erase(ends.begin() + std::ptrdiff_t(best));
+      if (k == *e) continue;
+      if ((k - *e).norm() <= kMergeEnds * (1 + e->norm())) {
+        // The piece's own corner, within its gap to the neighbour: it becomes the path's end
+        // (no sliver edge between the two on the shared plane).
+        for (Segment& sgm : all) {
+          if (sgm.first == k) sgm.first = *e;
+          if (sgm.second == k) sgm.second = *e;
+        }
+      } else {
+        all.push_back({*e, k});
+      }
+    }
+  }
+  const auto loops = chain(all);
+  if (!loops) return false;
+  for (const Path& l : *loops) {
+    if (!l.closed || l.points.size() > kMaxLoopPoints) return false;
+    if (std::none_of(l.points.begin(), l.points.end(), [&](const Vector3d& p) { return isNew.count(p) > 0; }))
+      return false;
+  }
+  for (const Path& l : *loops) s.polygon(l.points);
+  return true;
+}
 
 }  // namespace
 
@@ -239,11 +324,22 @@ bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vect
         keptNormals.emplace(pos(t, k), mesh.normals[std::size_t(mesh.triangles[t][k])]);
       }
     }
+  double gradientSum = 0;
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+    gradientSum += q.gradient(mesh.positions[v]).dot(mesh.normals[v]) >= 0 ? 1 : -1;
   for (std::size_t t = 0; t < nsurf; ++t) {
     const Vector3d n = mesh.normals[std::size_t(mesh.triangles[t][0])] + mesh.normals[std::size_t(mesh.triangles[t][1])] +
                        mesh.normals[std::size_t(mesh.triangles[t][2])];
     windingSum += (pos(t, 1) - pos(t, 0)).cross(pos(t, 2) - pos(t, 0)).dot(n) > 0 ? 1 : -1;
   }
+  std::map<EdgeKey, int, EdgeLess> allUse;
+  for (std::size_t t = 0; t < nsurf; ++t)
+    for (int k = 0; k < 3; ++k) ++allUse[key(pos(t, k), pos(t, (k + 1) % 3))];
+  auto onSharedPlane = [&](const EdgeKey& e) {
+    for (const HalfSpace& h : sharedPlanes)
+      if (onPlaneWithinRounding(h, e.first) && onPlaneWithinRounding(h, e.second)) return true;
+    return false;
+  };
   std::vector<Segment> inner, outer;
   for (const auto& [e, uses] : keptUse)
     if (uses == 1 && removedEdge.count(e)) inner.push_back(e);
@@ -254,56 +350,81 @@ bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vect
   if (!in || !out || out->empty()) return false;
 
   TriangleMesh3 strip;
-  Strip s{q, windingSum >= 0 ? 1 : -1, keptNormals, strip};
-  std::vector<bool> paired(in->size(), false);
-  for (const Path& o : *out) {
-    if (o.closed) {
-      // A loop: the kept loop nearest it, or a fan when nothing is kept.
-      int best = -1;
-      for (std::size_t k = 0; k < in->size(); ++k)
-        if ((*in)[k].closed && !paired[k]) best = best < 0 ? int(k) : -2;
-      if (best == -2) return false;
-      if (best < 0) {
-        if (!in->empty()) return false;
-        Vector3d c = Vector3d::Zero();
-        for (const Vector3d& p : o.points) c += p;
-        c = closestPointOnQuadric(q, c / double(o.points.size()));
+  Strip s{q, windingSum >= 0 ? 1 : -1, keptNormals, strip, gradientSum >= 0 ? 1 : -1};
+  // Each new boundary path paired with a kept chain (zipped), or a closed one with nothing
+  // kept fanned.
+  auto pairUp = [&]() -> bool {
+    std::vector<bool> paired(in->size(), false);
+    for (const Path& o : *out) {
+      if (o.closed) {
+        // A loop: the kept loop nearest it, or a fan when nothing is kept.
+        int best = -1;
+        for (std::size_t k = 0; k < in->size(); ++k)
+          if ((*in)[k].closed && !paired[k]) best = best < 0 ? int(k) : -2;
+        if (best == -2) return false;
+        if (best < 0) {
+          if (!in->empty()) return false;
+          Vector3d c = Vector3d::Zero();
+          for (const Vector3d& p : o.points) c += p;
+          c = closestPointOnQuadric(q, c / double(o.points.size()));
+          std::vector<Vector3d> ring = o.points;
+          ring.push_back(o.points.front());
+          // Wound like the other triangles of the piece, by the surface's gradient.
+          for (std::size_t i = 0; i + 1 < ring.size(); ++i) s.triangle(c, ring[i], ring[i + 1]);
+          continue;
+        }
+        paired[std::size_t(best)] = true;
         std::vector<Vector3d> ring = o.points;
         ring.push_back(o.points.front());
-        // Wound like the other triangles of the piece, by the surface's gradient.
-        for (std::size_t i = 0; i + 1 < ring.size(); ++i) s.triangle(c, ring[i], ring[i + 1], c);
+        const std::vector<Vector3d> kept = openLoop((*in)[std::size_t(best)].points, ring.front(), ring);
+        s.zip(kept, ring);
         continue;
       }
-      paired[std::size_t(best)] = true;
-      std::vector<Vector3d> ring = o.points;
-      ring.push_back(o.points.front());
-      const std::vector<Vector3d> kept = openLoop((*in)[std::size_t(best)].points, ring.front(), ring);
-      s.zip(kept, ring);
-      continue;
-    }
-    // An open path: the open chain whose ends are nearest its ends.
-    int best = -1;
-    bool reversed = false;
-    double bestDist = 1e300;
-    for (std::size_t k = 0; k < in->size(); ++k) {
-      const Path& c = (*in)[k];
-      if (c.closed || paired[k]) continue;
-      const double fwd = (c.points.front() - o.points.front()).norm() + (c.points.back() - o.points.back()).norm();
-      const double bwd = (c.points.back() - o.points.front()).norm() + (c.points.front() - o.points.back()).norm();
-      if (std::min(fwd, bwd) < bestDist) {
-        bestDist = std::min(fwd, bwd);
-        best = int(k);
-        reversed = bwd < fwd;
+      // An open path: the open chain whose ends are nearest its ends.
+      int best = -1;
+      bool reversed = false;
+      double bestDist = 1e300;
+      for (std::size_t k = 0; k < in->size(); ++k) {
+        const Path& c = (*in)[k];
+        if (c.closed || paired[k]) continue;
+        const double fwd = (c.points.front() - o.points.front()).norm() + (c.points.back() - o.points.back()).norm();
+        const double bwd = (c.points.back() - o.points.front()).norm() + (c.points.front() - o.points.back()).norm();
+        if (std::min(fwd, bwd) < bestDist) {
+          bestDist = std::min(fwd, bwd);
+          best = int(k);
+          reversed = bwd < fwd;
+        }
       }
+      if (best < 0) return false;
+      paired[std::size_t(best)] = true;
+      std::vector<Vector3d> kept = (*in)[std::size_t(best)].points;
+      if (reversed) std::reverse(kept.begin(), kept.end());
+      s.zip(kept, o.points);
     }
-    if (best < 0) return false;
-    paired[std::size_t(best)] = true;
-    std::vector<Vector3d> kept = (*in)[std::size_t(best)].points;
-    if (reversed) std::reverse(kept.begin(), kept.end());
-    s.zip(kept, o.points);
+    for (bool p : paired)
+      if (!p) return false;
+    return true;
+  };
+  if (!pairUp()) {
+    // The region the removal left, bounded by loops of kept chains, the piece's own edges on
+    // planes no other piece shares, and the polylines: each loop triangulated on its own.
+    strip = TriangleMesh3();
+    std::vector<Segment> own;
+    for (const auto& [e, uses] : allUse)
+      if (uses == 1 && removedEdge.count(e) && !onSharedPlane(e)) own.push_back(e);
+    const bool twoLoops = out->size() == 2 && (*out)[0].closed && (*out)[1].closed;
+    if (twoLoops) {
+      // A band (the surface enters the region through one loop and leaves through the
+      // other): zipped from loop to loop, nothing kept between them.
+      std::vector<Vector3d> a = (*out)[0].points, b = (*out)[1].points;
+      a.push_back(a.front());
+      b = openLoop(b, a.front(), a);
+      s.zip(b, a);
+      std::fill(removed.begin(), removed.end(), 1);
+    } else if (!fillLoops(*out, inner, own, s)) {
+      return false;
+    }
   }
-  for (bool p : paired)
-    if (!p) return false;
 
   // Kept surface triangles, the strip, then the caps.
   TriangleMesh3 result;

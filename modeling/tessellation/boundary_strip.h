@@ -9,7 +9,14 @@
 //    are zipped: from one end, a triangle at a time, advancing on the side whose next vertex
 //    comes first by fraction of arc length;
 //  - a closed loop with nothing kept inside it (a piece whose triangles all touch its shared
-//    planes) is fanned from its centroid moved onto the surface.
+//    planes) is fanned from its centroid moved onto the surface;
+//  - when the paths do not pair up so (a piece whose kept triangles do not separate its
+//    shared planes, or with none kept and an outer boundary): the open paths are joined to
+//    the chains of what is left — the kept chains and the piece's own edges on planes no
+//    other piece shares — end to nearest end (a chain's end within kMergeEnds of the path's
+//    becomes it), and each loop this closes is triangulated with the least total area;
+//    two closed paths and no other (a band of surface across the region) are zipped to each
+//    other, none of the piece's own triangles kept.
 // The polyline vertices are used as given, so two pieces zipped onto one polyline share its
 // vertices bit for bit and every edge of it is used by one triangle on each side. Normals:
 // the kept vertices keep theirs, the new ones get the surface's gradient, turned like the
@@ -27,9 +34,15 @@
 
 namespace qacc::tess {
 
-// False, with the mesh unchanged, when the polylines or the kept chains do not pair up (a
-// junction of more than two, different counts of paths and chains, an open path with no kept
-// chain).
+// Longest loop triangulated by least area (its cost grows with the cube of its points).
+constexpr std::size_t kMaxLoopPoints = 1200;
+// A chain's end this close to a path's end (relative to its distance from the origin, at
+// least a unit) is that end: a piece's own corner and the shared one differ by the gap
+// between the pieces' surfaces (up to 3e-4 on the torus's reduction pieces).
+constexpr double kMergeEnds = 1e-3;
+
+// False, with the mesh unchanged, when neither way closes the strip (a junction of more
+// than two, a loop that does not close, holds no polyline or is longer than kMaxLoopPoints).
 bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vector<HalfSpace>& sharedPlanes,
                       const std::vector<std::vector<Eigen::Vector3d>>& polylines, const Quadric& q);
 

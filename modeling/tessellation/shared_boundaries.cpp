@@ -135,28 +135,28 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
         pairs.push_back(std::move(p));
       }
   }
-  // 1. The ends of each pair's curve on the common face (none: the faces do not meet there).
+  // 1. The arcs of each pair's curve on the common face (none: the faces do not meet there).
   std::vector<char> keep(pairs.size(), 0);
+  std::vector<std::vector<Vector3d>> arcs(pairs.size());
 #pragma omp parallel for schedule(dynamic, 16)
   for (long lp = 0; lp < long(pairs.size()); ++lp) {
     Pair& p = pairs[std::size_t(lp)];
     const Primitive& lo = prims[std::size_t(p.lo)];
-    const auto ends = sharedCurveEnds(lo.quadric.normalized(), lo.clip[std::size_t(p.klo)], p.face);
-    if (!ends) {
-      keep[std::size_t(lp)] = 2;
-    } else if (ends->size() == 2) {
-      const bool swap = lexLess((*ends)[1], (*ends)[0]);
-      p.end[0] = (*ends)[swap ? 1 : 0];
-      p.end[1] = (*ends)[swap ? 0 : 1];
-      keep[std::size_t(lp)] = 1;
-    }
+    auto ends = sharedCurveEnds(lo.quadric.normalized(), lo.clip[std::size_t(p.klo)], p.face);
+    keep[std::size_t(lp)] = !ends.empty();
+    arcs[std::size_t(lp)] = std::move(ends);
   }
-  for (std::size_t m = 0; m < pairs.size(); ++m)
-    if (keep[m] == 2) pairs[m].group->refused = true;
   {
+    // One entry per arc, its ends in lexicographic order.
     std::vector<Pair> kept;
     for (std::size_t m = 0; m < pairs.size(); ++m)
-      if (keep[m] == 1) kept.push_back(std::move(pairs[m]));
+      for (std::size_t a = 0; keep[m] == 1 && a + 1 < arcs[m].size(); a += 2) {
+        Pair p = pairs[m];
+        const bool swap = lexLess(arcs[m][a + 1], arcs[m][a]);
+        p.end[0] = arcs[m][swap ? a + 1 : a];
+        p.end[1] = arcs[m][swap ? a : a + 1];
+        kept.push_back(std::move(p));
+      }
     pairs = std::move(kept);
   }
   // 2. Corners common to all the pairs that end there.

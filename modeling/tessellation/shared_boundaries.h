@@ -5,20 +5,19 @@
 // its own; its triangles at the shared planes are then replaced so that both sides end on
 // one polyline, by construction:
 //  1. per pair of pieces on the two sides of a shared plane (in a canonical order: the lower
-//     primitive's quadric and plane), the ends of the curve on their common face
-//     (shared_polyline.h);
-//  2. ends of all pairs closer than a rounding tolerance (a corner where three or more pieces
+//     primitive's quadric and plane), the arcs of the curve on their common face, as their
+//     ends (shared_polyline.h);
+//  2. ends of all arcs closer than a rounding tolerance (a corner where three or more pieces
 //     meet, found from different planes) become one point, the lexicographically least;
-//  3. each pair's curve sampled once between its two ends, to the tolerance (the pixel
-//     error in a view, else the finer of the two pieces' measured chord errors);
+//  3. each arc sampled once between its two ends, to the tolerance (the pixel error in a
+//     view, else the finer of the two pieces' measured chord errors);
 //  4. each piece's triangles touching its shared planes removed and the strip to those
-//     polylines zipped again (boundary_strip.h).
+//     polylines triangulated again (boundary_strip.h).
 // Both sides then carry the same vertices, bit for bit, on every shared boundary: each edge
-// of it is used by exactly two triangles. A plane where a pair's curve does not form one arc
-// on the common face (it crosses the face's border more than twice), or whose
-// sampling fails, is left as each piece made it, for all the pieces on it; so is a piece
-// whose strip does not pair up with its polylines. Where the quadric pieces have a gap (not
-// G0), the strip on the far side bridges it.
+// of it is used by exactly two triangles. A plane where an arc's sampling fails is left as
+// each piece made it, for all the pieces on it; so is a piece whose strip cannot be closed
+// onto its polylines (its neighbours' side of the boundary is then open). Where the quadric
+// pieces have a gap (not G0), the strip on the far side bridges it.
 // tessellateScene stitches only the pieces that surely reach the view (piece_in_view.h), so
 // that view culling, which removes pieces outside it, changes no kept piece's triangles: a
 // polyline depends only on its two pieces, a snapped corner only on the ends that meet there.
@@ -35,9 +34,9 @@ namespace qacc::tess {
 struct StitchReport {
   std::size_t shared_planes = 0;      // planes with pieces on both sides
   std::size_t refused_planes = 0;     // of them, left as the pieces made them
-  std::size_t polylines = 0;          // shared boundaries sampled once
+  std::size_t polylines = 0;          // arcs of shared boundaries sampled once
   std::size_t zipped = 0;             // pieces made to end on their polylines
-  std::size_t refused_pieces = 0;     // pieces whose strip did not pair up (left as made)
+  std::size_t refused_pieces = 0;     // pieces whose strip could not be closed (left as made)
 };
 
 // How finely the shared curves are sampled: `pixels` of sagitta in `view` when view is set,

@@ -46,11 +46,81 @@ std::vector<Vector3d> lineRoots(const Quadric& q, const HalfSpace& h, const Half
   return out;
 }
 
+// The curve from a traced until one of `targets` is within a step: steps along the tangent
+// (the way that enters the face), each as long as the curvature allows within the
+// tolerance, moved back onto the curve; `span` sets the probe and the shortest and longest
+// steps.
+// `reached`: the index in `targets` of the point the trace ended on.
+std::optional<std::vector<Vector3d>> traceSharedCurve(const Quadric& q, const HalfSpace& h,
+                                                      const std::vector<HalfSpace>& face, const Vector3d& a,
+                                                      const std::vector<Vector3d>& targets, double span,
+                                                      const PolylineTolerance& tol, std::size_t* reached = nullptr) {
+  Domain curve;
+  curve.surface = &q;
+  const Vector3d n = h.p.head<3>().normalized();
+  const Eigen::Matrix3d H = 2.0 * q.Q.topLeftCorner<3, 3>();
+  if (!(span > 0) || targets.empty()) return std::nullopt;
+  auto tangent = [&](const Vector3d& x) {
+    const Vector3d g = q.gradient(x);
+    return Vector3d((g - g.dot(n) * n).cross(n));
+  };
+  auto onCurve = [&](const Vector3d& x) {
+    const Vector3d g = q.gradient(x);
+    return g.norm() > 0 && std::abs(q.eval(x)) <= 1e-9 * g.norm() * (1 + x.norm());
+  };
+  Vector3d t = tangent(a);
+  if (!(t.norm() > 0)) return std::nullopt;
+  t.normalize();
+  // The way into the face.
+  const double probe = 1e-3 * span;
+  const Vector3d fwd = curve.ontoCurve(a + probe * t, h, span), bwd = curve.ontoCurve(a - probe * t, h, span);
+  const bool inF = onCurve(fwd) && insideFace(face, fwd, 1e-9), inB = onCurve(bwd) && insideFace(face, bwd, 1e-9);
+  if (inF == inB) return std::nullopt;
+  if (inB) t = -t;
+  std::vector<Vector3d> out{a};
+  Vector3d x = a;
+  constexpr int kMaxSteps = 1 << 12;
+  for (int step = 0; step < kMaxSteps; ++step) {
+    Vector3d tx = tangent(x);
+    if (!(tx.norm() > 0)) return std::nullopt;
+    tx.normalize();
+    if (tx.dot(t) < 0) tx = -tx;
+    t = tx;
+    const Vector3d g = q.gradient(x);
+    const double gp = (g - g.dot(n) * n).norm();
+    const double kappa = std::abs(t.dot(H * t)) / gp;
+    double world = tol.world;
+    if (tol.view && tol.pixels > 0) {
+      const double w = tol.pixels / tol.view->pixelsPerUnit(x);
+      world = world > 0 ? std::min(world, w) : w;
+    }
+    if (!(world > 0)) world = 1e-3 * span;
+    double len = kappa > 0 ? std::sqrt(8 * world / kappa) : span;
+    len = std::clamp(len, 1e-4 * span, 0.25 * span);
+    for (std::size_t k = 0; k < targets.size(); ++k)
+      if ((targets[k] - x).norm() <= len && (step > 0 || (targets[k] - a).dot(t) > 0)) {
+        out.push_back(targets[k]);
+        if (reached) *reached = k;
+        return out;
+      }
+    const Vector3d y = curve.ontoCurve(x + len * t, h, 2 * len);
+    if (!onCurve(y) || !insideFace(face, y, 1e-6) || !((y - x).norm() > 0)) return std::nullopt;
+    out.push_back(y);
+    x = y;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
-std::optional<std::vector<Vector3d>> sharedCurveEnds(const Quadric& q, const HalfSpace& h,
-                                                     const std::vector<HalfSpace>& face) {
+std::vector<Vector3d> sharedCurveEnds(const Quadric& q, const HalfSpace& h, const std::vector<HalfSpace>& face) {
   const Vector3d nh = h.p.head<3>().normalized();
+  // Two opposite planes in the face: the pieces meet along a line at most, sharing no arc.
+  for (std::size_t i = 0; i < face.size(); ++i)
+    for (std::size_t j = i + 1; j < face.size(); ++j) {
+      const double ni = face[i].p.head<3>().norm(), nj = face[j].p.head<3>().norm();
+      if (ni > 0 && nj > 0 && (face[i].p / ni + face[j].p / nj).norm() <= 1e-12) return {};
+    }
   std::vector<Vector3d> ends;
   for (const HalfSpace& g : face)
     for (const Vector3d& x : lineRoots(q, h, g)) {
@@ -70,21 +140,33 @@ std::optional<std::vector<Vector3d>> sharedCurveEnds(const Quadric& q, const Hal
       for (const Vector3d& y : ends) known = known || (x - y).norm() <= 1e-7 * (1 + x.norm());
       if (!known) ends.push_back(x);
     }
-  if (ends.size() <= 1) return std::vector<Vector3d>();  // the faces meet at a point at most
+  if (ends.size() <= 1) return {};  // the faces meet at a point at most
   if (ends.size() == 2) return ends;
-  // More: the one pair of ends whose arc's middle lies inside the face (a point where the
-  // curve only passes through a corner of the face is the end of no arc).
-  Domain curve;
-  curve.surface = &q;
-  std::vector<Vector3d> arc;
-  for (std::size_t i = 0; i < ends.size(); ++i)
-    for (std::size_t j = i + 1; j < ends.size(); ++j) {
-      const Vector3d m = curve.ontoCurve(0.5 * (ends[i] + ends[j]), h, (ends[j] - ends[i]).norm());
-      if (std::abs(q.eval(m)) > 1e-9 * q.gradient(m).norm() * (1 + m.norm()) || !insideFace(face, m, 1e-9)) continue;
-      if (!arc.empty()) return std::nullopt;
-      arc = {ends[i], ends[j]};
-    }
-  return arc;
+  // More: each end not yet in an arc traced into the face to the end it reaches (an end
+  // where the curve only passes through a corner of the face has no way in and is no end).
+  double span = 0;
+  for (const Vector3d& x : ends)
+    for (const Vector3d& y : ends) span = std::max(span, (x - y).norm());
+  PolylineTolerance coarse;
+  coarse.world = 1e-3 * span;
+  std::vector<Vector3d> arcs;
+  std::vector<char> used(ends.size(), 0);
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    if (used[i]) continue;
+    std::vector<Vector3d> targets;
+    std::vector<std::size_t> index;
+    for (std::size_t j = 0; j < ends.size(); ++j)
+      if (j != i && !used[j]) {
+        targets.push_back(ends[j]);
+        index.push_back(j);
+      }
+    std::size_t reached = 0;
+    if (!traceSharedCurve(q, h, face, ends[i], targets, span, coarse, &reached)) continue;
+    used[i] = used[index[reached]] = 1;
+    arcs.push_back(ends[i]);
+    arcs.push_back(ends[index[reached]]);
+  }
+  return arcs;
 }
 
 std::optional<std::vector<Vector3d>> sampleSharedCurve(const Quadric& q, const HalfSpace& h,
@@ -114,9 +196,11 @@ std::optional<std::vector<Vector3d>> sampleSharedCurve(const Quadric& q, const H
     self(self, x, r, depth + 1);
   };
   split(split, a, b, 0);
-  if (!ok) return std::nullopt;
-  out.push_back(b);
-  return out;
+  if (ok) {
+    out.push_back(b);
+    return out;
+  }
+  return traceSharedCurve(q, h, face, a, {b}, (b - a).norm(), tol);
 }
 
 }  // namespace qacc::tess

@@ -6,14 +6,19 @@
 //    clip plane of either piece, the roots of q along that line that lie inside every other
 //    plane of both pieces (within rounding) and where the curve crosses a plane of the face
 //    rather than touching it (a G1 cell's surface is tangent to faces of its tetrahedron).
-//    One end or none: the faces share no arc. More than two: the one pair whose arc's middle
-//    (the chord's midpoint moved onto the curve) lies inside the face — the others are where
-//    the curve passes through a corner of the face; with more than one such pair the curve
-//    enters the face more than once and is refused (no polyline).
+//    One end or none, or two opposite planes among the face's (pieces that meet along a
+//    line of the plane only): the faces share no arc. More than two (a conic can cross a
+//    face four times): each end not yet in an arc is traced into the face (below) to the
+//    end it reaches; an end with no way into the face (the curve only passes through a
+//    corner of it) is in no arc.
 //  - Between two ends the curve is sampled by halving: the midpoint of a chord is moved onto
 //    the curve within h (Newton steps along the gradient's component in the plane) and the
 //    chord split there while its sagitta exceeds the tolerance (world units, or pixels in a
-//    view), up to kMaxSharedPolylineDepth halvings.
+//    view), up to kMaxSharedPolylineDepth halvings. Where a midpoint does not reach the curve
+//    inside the face (an arc that turns back, more than half an ellipse), the curve is traced
+//    instead: from a, the way that enters the face, steps along the tangent as long as the
+//    curvature allows within the tolerance, each moved back onto the curve, until b is
+//    within a step.
 // The arithmetic runs once per pair of pieces, on the quadric and planes of the pair's lower
 // primitive for the curve (the caller's canonical order), so the result is the same whichever
 // piece asks.
@@ -31,11 +36,11 @@ namespace qacc::tess {
 
 constexpr int kMaxSharedPolylineDepth = 10;
 
-// The ends of the curve {q = 0} ∩ h within `face` (the other clip planes of both pieces):
-// none (the curve misses the common face or touches it at one point), two (one arc), or
-// std::nullopt when the curve has more than one arc on the face.
-std::optional<std::vector<Eigen::Vector3d>> sharedCurveEnds(const Quadric& q, const HalfSpace& h,
-                                                            const std::vector<HalfSpace>& face);
+// The arcs of the curve {q = 0} ∩ h within `face` (the other clip planes of both pieces), as
+// their ends, two per arc: none when the curve misses the common face or touches it at one
+// point.
+std::vector<Eigen::Vector3d> sharedCurveEnds(const Quadric& q, const HalfSpace& h,
+                                             const std::vector<HalfSpace>& face);
 
 // How finely: sagitta at most `world` (world units), and with a view at most `pixels` in it.
 struct PolylineTolerance {
@@ -45,7 +50,8 @@ struct PolylineTolerance {
 };
 
 // The curve from `a` to `b` (both on it, ends of one arc) sampled to the tolerance, a and b
-// included as given; std::nullopt when a midpoint does not reach the curve or leaves `face`.
+// included as given; std::nullopt when neither halving nor tracing stays on the curve in
+// `face`.
 std::optional<std::vector<Eigen::Vector3d>> sampleSharedCurve(const Quadric& q, const HalfSpace& h,
                                                               const std::vector<HalfSpace>& face,
                                                               const Eigen::Vector3d& a, const Eigen::Vector3d& b,

@@ -125,7 +125,7 @@ TEST_P(SharedBoundaryScene, EveryEdgeOnASharedPlaneIsUsedTwice) {
 INSTANTIATE_TEST_SUITE_P(SharedBoundaries, SharedBoundaryScene,
                          ::testing::Values(SceneCase{"macropatch_g0.json", true}, SceneCase{"macropatch_g1.json", true},
                                            SceneCase{"macropatch_bezier.json", false},
-                                           SceneCase{"bspline_g0.json", true}),
+                                           SceneCase{"bspline_g0.json", true}, SceneCase{"quartic.json", true}),
                          caseName);
 
 // Every interior edge — every edge but those of the object's outer boundary, which lie on a
@@ -147,7 +147,7 @@ TEST_P(InteriorEdges, AreUsedExactlyTwice) {
 
 INSTANTIATE_TEST_SUITE_P(SharedBoundaries, InteriorEdges,
                          ::testing::Values(SceneCase{"macropatch_g0.json", true}, SceneCase{"macropatch_g1.json", true},
-                                           SceneCase{"bspline_g0.json", true}),
+                                           SceneCase{"bspline_g0.json", true}, SceneCase{"quartic.json", true}),
                          caseName);
 
 TEST(SharedBoundaries, ClosedMacropatchSurfaceIsWatertight) {
