@@ -212,6 +212,76 @@ struct Strip {
       todo.push_back({k, j});
     }
   }
+  // Halves the edges between two new triangles whose midpoint lies farther from the surface
+  // than the tolerance (the point moved onto it), one edge per triangle and round.
+  void refine(const PolylineTolerance& tol) {
+    using Key = std::pair<Vector3d, Vector3d>;
+    auto less = [](const Key& a, const Key& b) {
+      if (a.first != b.first) return lexLess(a.first, b.first);
+      return lexLess(a.second, b.second);
+    };
+    auto at = [&](std::size_t t, int k) -> const Vector3d& { return out.positions[std::size_t(out.triangles[t][k])]; };
+    for (int round = 0; round < kStripRefinements; ++round) {
+      std::map<Key, std::vector<std::size_t>, decltype(less)> uses(less);
+      for (std::size_t t = 0; t < out.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+          const Vector3d &a = at(t, k), &b = at(t, (k + 1) % 3);
+          uses[lexLess(b, a) ? Key{b, a} : Key{a, b}].push_back(t);
+        }
+      std::vector<char> busy(out.triangles.size(), 0);
+      std::vector<std::pair<Key, Vector3d>> splits;
+      for (const auto& [e, ts] : uses) {
+        if (ts.size() != 2 || busy[ts[0]] || busy[ts[1]]) continue;
+        const Vector3d m = 0.5 * (e.first + e.second);
+        const Vector3d p = closestPointOnQuadric(q, m);
+        const double sag = (p - m).norm();
+        if (!p.allFinite() || sag > 0.5 * (e.second - e.first).norm()) continue;
+        double limit = tol.world;
+        if (tol.view && tol.pixels > 0) limit = tol.pixels / tol.view->pixelsPerUnit(p);
+        if (!(limit > 0) || sag <= limit) continue;
+        busy[ts[0]] = busy[ts[1]] = 1;
+        splits.push_back({e, p});
+      }
+      if (splits.empty()) return;
+      std::map<Key, Vector3d, decltype(less)> mid(less);
+      for (const auto& [e, p] : splits) mid.emplace(e, p);
+      TriangleMesh3 next;
+      std::swap(next, out);
+      for (std::size_t t = 0; t < next.triangles.size(); ++t) {
+        const Vector3d v[3] = {next.positions[std::size_t(next.triangles[t][0])],
+                               next.positions[std::size_t(next.triangles[t][1])],
+                               next.positions[std::size_t(next.triangles[t][2])]};
+        const Vector3d n[3] = {next.normals[std::size_t(next.triangles[t][0])],
+                               next.normals[std::size_t(next.triangles[t][1])],
+                               next.normals[std::size_t(next.triangles[t][2])]};
+        int split = -1;
+        Vector3d p;
+        for (int k = 0; k < 3 && split < 0; ++k) {
+          const Vector3d &a = v[k], &b = v[(k + 1) % 3];
+          auto it = mid.find(lexLess(b, a) ? Key{b, a} : Key{a, b});
+          if (it != mid.end()) {
+            split = k;
+            p = it->second;
+          }
+        }
+        auto emit = [&](const Vector3d& a, const Vector3d& na, const Vector3d& b, const Vector3d& nb,
+                        const Vector3d& c, const Vector3d& nc) {
+          const int base = int(out.positions.size());
+          out.positions.insert(out.positions.end(), {a, b, c});
+          out.normals.insert(out.normals.end(), {na, nb, nc});
+          out.triangles.push_back({base, base + 1, base + 2});
+        };
+        if (split < 0) {
+          emit(v[0], n[0], v[1], n[1], v[2], n[2]);
+          continue;
+        }
+        const int a = split, b = (split + 1) % 3, c = (split + 2) % 3;
+        const Vector3d np = normalAt(p);
+        emit(v[a], n[a], p, np, v[c], n[c]);
+        emit(p, np, v[b], n[b], v[c], n[c]);
+      }
+    }
+  }
   // Kept chain `in` and new boundary `o`, both from the same end.
   void zip(const std::vector<Vector3d>& in, const std::vector<Vector3d>& o) {
     const std::vector<double> fi = arcFractions(in), fo = arcFractions(o);
@@ -287,7 +357,8 @@ bool fillLoops(const std::vector<Path>& out, const std::vector<Segment>& inner, 
 }  // namespace
 
 bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vector<HalfSpace>& sharedPlanes,
-                      const std::vector<std::vector<Vector3d>>& polylines, const Quadric& q) {
+                      const std::vector<std::vector<Vector3d>>& polylines, const Quadric& q,
+                      const PolylineTolerance& tol) {
   if (polylines.empty()) return false;
   const std::size_t nsurf = std::min(surface, mesh.triangles.size());
   auto pos = [&](std::size_t t, int k) -> const Vector3d& { return mesh.positions[std::size_t(mesh.triangles[t][k])]; };
@@ -425,6 +496,8 @@ bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vect
       return false;
     }
   }
+
+  s.refine(tol);
 
   // Kept surface triangles, the strip, then the caps.
   TriangleMesh3 result;

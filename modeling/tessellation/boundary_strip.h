@@ -30,6 +30,7 @@
 
 #include "modeling/geometry/half_space.h"
 #include "modeling/geometry/quadric.h"
+#include "modeling/tessellation/shared_polyline.h"  // PolylineTolerance
 #include "modeling/tessellation/tessellation.h"
 
 namespace qacc::tess {
@@ -40,10 +41,14 @@ constexpr std::size_t kMaxLoopPoints = 1200;
 // least a unit) is that end: a piece's own corner and the shared one differ by the gap
 // between the pieces' surfaces (up to 3e-4 on the torus's reduction pieces).
 constexpr double kMergeEnds = 1e-3;
+constexpr int kStripRefinements = 6;
 
 // False, with the mesh unchanged, when neither way closes the strip (a junction of more
 // than two, a loop that does not close, holds no polyline or is longer than kMaxLoopPoints).
+// `tol`: the strip's own edges (between two new triangles) are halved, the midpoint moved onto
+// the surface, while its distance to the chord exceeds it (up to kStripRefinements rounds).
 bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vector<HalfSpace>& sharedPlanes,
-                      const std::vector<std::vector<Eigen::Vector3d>>& polylines, const Quadric& q);
+                      const std::vector<std::vector<Eigen::Vector3d>>& polylines, const Quadric& q,
+                      const PolylineTolerance& tol);
 
 }  // namespace qacc::tess

@@ -208,9 +208,16 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
   for (long li = 0; li < long(prims.size()); ++li) {
     const std::size_t i = std::size_t(li);
     if (lines[i].empty()) continue;
-    zipped[i] = zipBoundaryStrip(*meshes[i], surfaceTriangles[i], planes[i], lines[i], prims[i].quadric.normalized())
-                    ? 1
-                    : 2;
+    PolylineTolerance tol;
+    if (sampling.view) {
+      tol.view = sampling.view;
+      tol.pixels = sampling.pixels;
+    } else {
+      tol.world = sampling.chordError[i];
+    }
+    zipped[i] =
+        zipBoundaryStrip(*meshes[i], surfaceTriangles[i], planes[i], lines[i], prims[i].quadric.normalized(), tol) ? 1
+                                                                                                                   : 2;
   }
   for (char z : zipped) {
     rep.zipped += z == 1;

@@ -147,7 +147,8 @@ TEST_P(InteriorEdges, AreUsedExactlyTwice) {
 
 INSTANTIATE_TEST_SUITE_P(SharedBoundaries, InteriorEdges,
                          ::testing::Values(SceneCase{"macropatch_g0.json", true}, SceneCase{"macropatch_g1.json", true},
-                                           SceneCase{"bspline_g0.json", true}, SceneCase{"quartic.json", true}),
+                                           SceneCase{"bspline_g0.json", true}, SceneCase{"torus.json", true},
+                                           SceneCase{"quartic.json", true}),
                          caseName);
 
 TEST(SharedBoundaries, ClosedMacropatchSurfaceIsWatertight) {
