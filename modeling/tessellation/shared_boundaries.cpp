@@ -29,7 +29,7 @@ struct Group {
 
 struct Pair {
   Group* group;
-  int lo, klo, hi, khi;  // primitives (lo < hi) and their clip indices on the plane
+  int lo, klo, hi, khi;  // primitives (lo: the canonical one, on side 0) and their clip indices
   std::vector<HalfSpace> face;
   Vector3d end[2];
   std::vector<Vector3d> polyline;
@@ -122,11 +122,12 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
       for (const auto& b : g.side[1]) {
         Pair p;
         p.group = &g;
-        const bool aLow = a.first < b.first;
-        p.lo = aLow ? a.first : b.first;
-        p.klo = aLow ? a.second : b.second;
-        p.hi = aLow ? b.first : a.first;
-        p.khi = aLow ? b.second : a.second;
+        // The canonical piece: the one on side 0, whatever the primitives' order (view culling
+        // may number them differently).
+        p.lo = a.first;
+        p.klo = a.second;
+        p.hi = b.first;
+        p.khi = b.second;
         for (const auto& [i, k] : {std::pair{p.lo, p.klo}, std::pair{p.hi, p.khi}}) {
           const auto& clip = prims[std::size_t(i)].clip;
           for (std::size_t m = 0; m < clip.size(); ++m)

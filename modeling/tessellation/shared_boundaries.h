@@ -4,9 +4,10 @@
 // — meet along the curve where both surfaces cross that plane. Each piece is tessellated on
 // its own; its triangles at the shared planes are then replaced so that both sides end on
 // one polyline, by construction:
-//  1. per pair of pieces on the two sides of a shared plane (in a canonical order: the lower
-//     primitive's quadric and plane), the arcs of the curve on their common face, as their
-//     ends (shared_polyline.h);
+//  1. per pair of pieces on the two sides of a shared plane (in a canonical order that does
+//     not depend on the primitives' numbering: the quadric and plane of the piece whose plane's
+//     first non-zero coefficient is positive), the arcs of the curve on their common face, as
+//     their ends (shared_polyline.h);
 //  2. ends of all arcs closer than a rounding tolerance (a corner where three or more pieces
 //     meet, found from different planes) become one point, the lexicographically least;
 //  3. each arc sampled once between its two ends, to the tolerance (the pixel error in a

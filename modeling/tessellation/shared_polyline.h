@@ -19,9 +19,8 @@
 //    instead: from a, the way that enters the face, steps along the tangent as long as the
 //    curvature allows within the tolerance, each moved back onto the curve, until b is
 //    within a step.
-// The arithmetic runs once per pair of pieces, on the quadric and planes of the pair's lower
-// primitive for the curve (the caller's canonical order), so the result is the same whichever
-// piece asks.
+// The arithmetic runs once per pair of pieces, on the quadric and plane of the pair's
+// canonical piece (the caller's choice), so the result is the same whichever piece asks.
 #pragma once
 #include <optional>
 #include <vector>
