@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "modeling/tessellation/piece_boundary.h"    // onPlaneWithinRounding
+#include "modeling/tessellation/screen_error.h"
 #include "modeling/tessellation/surface_clipping.h"  // PointKey
 
 namespace qacc::tess {
@@ -212,8 +213,19 @@ struct Strip {
       todo.push_back({k, j});
     }
   }
-  // Halves the edges between two new triangles whose midpoint lies farther from the surface
-  // than the tolerance (the point moved onto it), one edge per triangle and round.
+  // The error of new triangle t, measured as the scene's report measures it (the samples of
+  // measurePixelError in a view, of measureChordError otherwise), against the tolerance.
+  double excess(std::size_t t, const PolylineTolerance& tol) const {
+    if (tol.view && tol.pixels > 0)
+      return measurePixelError(out, q, *tol.view, t, 1, tol.samples).max / tol.pixels;
+    return tol.world > 0 ? measureChordError(out, q, t, 1, tol.samples).max / tol.world : 0.0;
+  }
+  // Until every new triangle is within the tolerance (by excess()), or kStripRefinements
+  // rounds, or the strip has grown kStripGrowth times: each triangle over it is split, at most one split per triangle and round. Its
+  // longest edge shared with another new triangle is halved in both (the midpoint moved onto
+  // the surface); a triangle with no such edge (all three on the polylines or the kept chains,
+  // which are never split, so both sides keep their vertices) gets its centroid, moved onto
+  // the surface, as a third vertex of three triangles.
   void refine(const PolylineTolerance& tol) {
     using Key = std::pair<Vector3d, Vector3d>;
     auto less = [](const Key& a, const Key& b) {
@@ -221,30 +233,68 @@ struct Strip {
       return lexLess(a.second, b.second);
     };
     auto at = [&](std::size_t t, int k) -> const Vector3d& { return out.positions[std::size_t(out.triangles[t][k])]; };
-    for (int round = 0; round < kStripRefinements; ++round) {
+    auto keyOf = [](const Vector3d& a, const Vector3d& b) { return lexLess(b, a) ? Key{b, a} : Key{a, b}; };
+    // A point of the surface near m: its closest point, unless that lies farther than
+    // `reach` (another sheet, or no convergence).
+    auto ontoSurface = [&](const Vector3d& m, double reach, Vector3d& p) {
+      p = closestPointOnQuadric(q, m);
+      return p.allFinite() && (p - m).norm() <= reach;
+    };
+    // A triangle no longer than the tolerance (its longest edge, in pixels in a view) is not
+    // split: whatever its measured error, halving it would not be seen.
+    auto longerThanTolerance = [&](std::size_t t) {
+      double longest = 0;
+      for (int k = 0; k < 3; ++k) {
+        const Vector3d &a = at(t, k), &b = at(t, (k + 1) % 3);
+        longest = std::max(longest, tol.view && tol.pixels > 0 ? (tol.view->project(a) - tol.view->project(b)).norm()
+                                                               : (b - a).norm());
+      }
+      return longest > (tol.view && tol.pixels > 0 ? tol.pixels : tol.world);
+    };
+    const std::size_t budget = kStripGrowth * std::max<std::size_t>(out.triangles.size(), 1);
+    for (int round = 0; round < kStripRefinements && out.triangles.size() < budget; ++round) {
+      std::vector<std::size_t> over;
+      for (std::size_t t = 0; t < out.triangles.size(); ++t)
+        if (longerThanTolerance(t) && excess(t, tol) > 1.0) over.push_back(t);
+      if (over.empty()) return;
       std::map<Key, std::vector<std::size_t>, decltype(less)> uses(less);
       for (std::size_t t = 0; t < out.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) uses[keyOf(at(t, k), at(t, (k + 1) % 3))].push_back(t);
+      std::vector<char> busy(out.triangles.size(), 0);
+      std::map<Key, Vector3d, decltype(less)> mid(less);
+      std::map<std::size_t, Vector3d> centre;
+      for (std::size_t t : over) {
+        if (busy[t]) continue;
+        int best = -1;
+        double bestLength = -1;
+        bool anyShared = false;
         for (int k = 0; k < 3; ++k) {
           const Vector3d &a = at(t, k), &b = at(t, (k + 1) % 3);
-          uses[lexLess(b, a) ? Key{b, a} : Key{a, b}].push_back(t);
+          const auto& ts = uses[keyOf(a, b)];
+          if (ts.size() != 2) continue;
+          anyShared = true;
+          const std::size_t other = ts[0] == t ? ts[1] : ts[0];
+          if (busy[other] || (b - a).norm() <= bestLength) continue;
+          best = k;
+          bestLength = (b - a).norm();
         }
-      std::vector<char> busy(out.triangles.size(), 0);
-      std::vector<std::pair<Key, Vector3d>> splits;
-      for (const auto& [e, ts] : uses) {
-        if (ts.size() != 2 || busy[ts[0]] || busy[ts[1]]) continue;
-        const Vector3d m = 0.5 * (e.first + e.second);
-        const Vector3d p = closestPointOnQuadric(q, m);
-        const double sag = (p - m).norm();
-        if (!p.allFinite() || sag > 0.5 * (e.second - e.first).norm()) continue;
-        double limit = tol.world;
-        if (tol.view && tol.pixels > 0) limit = tol.pixels / tol.view->pixelsPerUnit(p);
-        if (!(limit > 0) || sag <= limit) continue;
-        busy[ts[0]] = busy[ts[1]] = 1;
-        splits.push_back({e, p});
+        Vector3d p;
+        if (best >= 0) {
+          const Vector3d &a = at(t, best), &b = at(t, (best + 1) % 3);
+          if (!ontoSurface(0.5 * (a + b), 0.5 * (b - a).norm(), p)) continue;
+          const auto& ts = uses[keyOf(a, b)];
+          busy[ts[0]] = busy[ts[1]] = 1;
+          mid.emplace(keyOf(a, b), p);
+        } else if (!anyShared) {
+          const Vector3d c = (at(t, 0) + at(t, 1) + at(t, 2)) / 3.0;
+          const double size = std::max({(at(t, 1) - at(t, 0)).norm(), (at(t, 2) - at(t, 1)).norm(),
+                                        (at(t, 0) - at(t, 2)).norm()});
+          if (!ontoSurface(c, 0.5 * size, p)) continue;
+          busy[t] = 1;
+          centre.emplace(t, p);
+        }
       }
-      if (splits.empty()) return;
-      std::map<Key, Vector3d, decltype(less)> mid(less);
-      for (const auto& [e, p] : splits) mid.emplace(e, p);
+      if (mid.empty() && centre.empty()) return;
       TriangleMesh3 next;
       std::swap(next, out);
       for (std::size_t t = 0; t < next.triangles.size(); ++t) {
@@ -254,16 +304,6 @@ struct Strip {
         const Vector3d n[3] = {next.normals[std::size_t(next.triangles[t][0])],
                                next.normals[std::size_t(next.triangles[t][1])],
                                next.normals[std::size_t(next.triangles[t][2])]};
-        int split = -1;
-        Vector3d p;
-        for (int k = 0; k < 3 && split < 0; ++k) {
-          const Vector3d &a = v[k], &b = v[(k + 1) % 3];
-          auto it = mid.find(lexLess(b, a) ? Key{b, a} : Key{a, b});
-          if (it != mid.end()) {
-            split = k;
-            p = it->second;
-          }
-        }
         auto emit = [&](const Vector3d& a, const Vector3d& na, const Vector3d& b, const Vector3d& nb,
                         const Vector3d& c, const Vector3d& nc) {
           const int base = int(out.positions.size());
@@ -271,6 +311,21 @@ struct Strip {
           out.normals.insert(out.normals.end(), {na, nb, nc});
           out.triangles.push_back({base, base + 1, base + 2});
         };
+        if (auto it = centre.find(t); it != centre.end()) {
+          const Vector3d& p = it->second;
+          const Vector3d np = normalAt(p);
+          for (int k = 0; k < 3; ++k) emit(v[k], n[k], v[(k + 1) % 3], n[(k + 1) % 3], p, np);
+          continue;
+        }
+        int split = -1;
+        Vector3d p;
+        for (int k = 0; k < 3 && split < 0; ++k) {
+          auto it = mid.find(keyOf(v[k], v[(k + 1) % 3]));
+          if (it != mid.end()) {
+            split = k;
+            p = it->second;
+          }
+        }
         if (split < 0) {
           emit(v[0], n[0], v[1], n[1], v[2], n[2]);
           continue;

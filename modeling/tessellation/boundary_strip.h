@@ -41,12 +41,17 @@ constexpr std::size_t kMaxLoopPoints = 1200;
 // least a unit) is that end: a piece's own corner and the shared one differ by the gap
 // between the pieces' surfaces (up to 3e-4 on the torus's reduction pieces).
 constexpr double kMergeEnds = 1e-3;
-constexpr int kStripRefinements = 6;
+constexpr int kStripRefinements = 24;
+// ... nor beyond this many times its triangles as first made (a tolerance far below what the
+// surface's sampling can show, such as a flat piece's chord error of 0, would not stop it).
+constexpr std::size_t kStripGrowth = 16;
 
 // False, with the mesh unchanged, when neither way closes the strip (a junction of more
 // than two, a loop that does not close, holds no polyline or is longer than kMaxLoopPoints).
-// `tol`: the strip's own edges (between two new triangles) are halved, the midpoint moved onto
-// the surface, while its distance to the chord exceeds it (up to kStripRefinements rounds).
+// `tol`: every new triangle whose error (measured at tol.samples as the tessellation's report
+// measures it) exceeds it is split, its midpoints moved onto the surface, up to
+// kStripRefinements rounds or kStripGrowth times the strip; a triangle no longer than the
+// tolerance is not split; the polylines and the kept triangles' edges are never split.
 bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vector<HalfSpace>& sharedPlanes,
                       const std::vector<std::vector<Eigen::Vector3d>>& polylines, const Quadric& q,
                       const PolylineTolerance& tol);

@@ -216,13 +216,16 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
     } else {
       tol.world = sampling.chordError[i];
     }
+    tol.samples = sampling.samples;
     zipped[i] =
         zipBoundaryStrip(*meshes[i], surfaceTriangles[i], planes[i], lines[i], prims[i].quadric.normalized(), tol) ? 1
                                                                                                                    : 2;
   }
-  for (char z : zipped) {
-    rep.zipped += z == 1;
-    rep.refused_pieces += z == 2;
+  rep.rebuilt.assign(prims.size(), 0);
+  for (std::size_t i = 0; i < prims.size(); ++i) {
+    rep.zipped += zipped[i] == 1;
+    rep.refused_pieces += zipped[i] == 2;
+    rep.rebuilt[i] = zipped[i] == 1;
   }
   return rep;
 }

@@ -38,6 +38,9 @@ struct StitchReport {
   std::size_t polylines = 0;          // arcs of shared boundaries sampled once
   std::size_t zipped = 0;             // pieces made to end on their polylines
   std::size_t refused_pieces = 0;     // pieces whose strip could not be closed (left as made)
+  // Per primitive: true when its surface triangles were rebuilt onto its polylines (its chord
+  // and pixel errors must then be measured again, on the mesh as it now is).
+  std::vector<char> rebuilt;
 };
 
 // How finely the shared curves are sampled: `pixels` of sagitta in `view` when view is set,
@@ -46,6 +49,7 @@ struct SharedBoundarySampling {
   const ScreenView* view = nullptr;
   double pixels = 0;
   std::vector<double> chordError;  // per primitive
+  int samples = 6;  // barycentric subdivisions when measuring a rebuilt triangle's error
 };
 
 // `meshes[i]` is the tessellation of prims[i] (surface triangles first), or null when the

@@ -46,6 +46,7 @@ struct PolylineTolerance {
   double world = 0;
   const ScreenView* view = nullptr;
   double pixels = 0;
+  int samples = 6;  // a triangle's error is measured at this barycentric grid (measureChordError)
 };
 
 // The curve from `a` to `b` (both on it, ends of one arc) sampled to the tolerance, a and b
