@@ -221,12 +221,13 @@ struct Strip {
     return tol.world > 0 ? measureChordError(out, q, t, 1, tol.samples).max / tol.world : 0.0;
   }
   // Until every new triangle is within the tolerance (by excess()), or kStripRefinements
-  // rounds, or the strip has grown kStripGrowth times: each triangle over it is split, at most one split per triangle and round. Its
+  // rounds, or the strip has kStripGrowth times as many triangles as it had or as it replaced: each triangle over it is split, at most one split per triangle and round. Its
   // longest edge shared with another new triangle is halved in both (the midpoint moved onto
   // the surface); a triangle with no such edge (all three on the polylines or the kept chains,
   // which are never split, so both sides keep their vertices) gets its centroid, moved onto
   // the surface, as a third vertex of three triangles.
-  void refine(const PolylineTolerance& tol) {
+  // Returns the largest excess() left (at most 1 when every new triangle is within the tolerance).
+  double refine(const PolylineTolerance& tol, std::size_t replaced) {
     using Key = std::pair<Vector3d, Vector3d>;
     auto less = [](const Key& a, const Key& b) {
       if (a.first != b.first) return lexLess(a.first, b.first);
@@ -251,12 +252,12 @@ struct Strip {
       }
       return longest > (tol.view && tol.pixels > 0 ? tol.pixels : tol.world);
     };
-    const std::size_t budget = kStripGrowth * std::max<std::size_t>(out.triangles.size(), 1);
+    const std::size_t budget = kStripGrowth * std::max<std::size_t>({out.triangles.size(), replaced, 1});
     for (int round = 0; round < kStripRefinements && out.triangles.size() < budget; ++round) {
       std::vector<std::size_t> over;
       for (std::size_t t = 0; t < out.triangles.size(); ++t)
         if (longerThanTolerance(t) && excess(t, tol) > 1.0) over.push_back(t);
-      if (over.empty()) return;
+      if (over.empty()) return 1.0;
       std::map<Key, std::vector<std::size_t>, decltype(less)> uses(less);
       for (std::size_t t = 0; t < out.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k) uses[keyOf(at(t, k), at(t, (k + 1) % 3))].push_back(t);
@@ -294,7 +295,7 @@ struct Strip {
           centre.emplace(t, p);
         }
       }
-      if (mid.empty() && centre.empty()) return;
+      if (mid.empty() && centre.empty()) break;
       TriangleMesh3 next;
       std::swap(next, out);
       for (std::size_t t = 0; t < next.triangles.size(); ++t) {
@@ -336,6 +337,10 @@ struct Strip {
         emit(p, np, v[b], n[b], v[c], n[c]);
       }
     }
+    double worst = 0;
+    for (std::size_t t = 0; t < out.triangles.size(); ++t)
+      if (longerThanTolerance(t)) worst = std::max(worst, excess(t, tol));
+    return worst;
   }
   // Kept chain `in` and new boundary `o`, both from the same end.
   void zip(const std::vector<Vector3d>& in, const std::vector<Vector3d>& o) {
@@ -409,12 +414,20 @@ bool fillLoops(const std::vector<Path>& out, const std::vector<Segment>& inner, 
   return true;
 }
 
-}  // namespace
 
-bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vector<HalfSpace>& sharedPlanes,
-                      const std::vector<std::vector<Vector3d>>& polylines, const Quadric& q,
-                      const PolylineTolerance& tol) {
-  if (polylines.empty()) return false;
+// zipBoundaryStrip with the triangles that touch a shared plane removed (removeAll false), or
+// with every surface triangle removed, the piece rebuilt from its polylines and its own edges
+// on unshared planes alone (removeAll true).
+struct Rebuilt {
+  TriangleMesh3 mesh;
+  std::size_t surface = 0;
+  double excess = 0;  // the strip's largest error over the tolerance (Strip::refine)
+};
+std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
+                                const std::vector<HalfSpace>& sharedPlanes,
+                                const std::vector<std::vector<Vector3d>>& polylines, const Quadric& q,
+                                const PolylineTolerance& tol, bool removeAll) {
+  if (polylines.empty()) return std::nullopt;
   const std::size_t nsurf = std::min(surface, mesh.triangles.size());
   auto pos = [&](std::size_t t, int k) -> const Vector3d& { return mesh.positions[std::size_t(mesh.triangles[t][k])]; };
   auto touches = [&](const Vector3d& x) {
@@ -422,10 +435,12 @@ bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vect
       if (onPlaneWithinRounding(h, x)) return true;
     return false;
   };
-  std::vector<char> removed(nsurf, 0);
-  for (std::size_t t = 0; t < nsurf; ++t)
-    for (int k = 0; k < 3 && !removed[t]; ++k) removed[t] = touches(pos(t, k));
-  removeAllButLargest(mesh, nsurf, removed);
+  std::vector<char> removed(nsurf, removeAll ? 1 : 0);
+  if (!removeAll) {
+    for (std::size_t t = 0; t < nsurf; ++t)
+      for (int k = 0; k < 3 && !removed[t]; ++k) removed[t] = touches(pos(t, k));
+    removeAllButLargest(mesh, nsurf, removed);
+  }
 
   // Edges of the kept triangles used once that a removed triangle uses too: the inner chains.
   using EdgeKey = std::pair<Vector3d, Vector3d>;
@@ -473,7 +488,7 @@ bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vect
     for (std::size_t i = 0; i + 1 < line.size(); ++i)
       if (line[i] != line[i + 1]) outer.push_back({line[i], line[i + 1]});
   const auto in = chain(inner), out = chain(outer);
-  if (!in || !out || out->empty()) return false;
+  if (!in || !out || out->empty()) return std::nullopt;
 
   TriangleMesh3 strip;
   Strip s{q, windingSum >= 0 ? 1 : -1, keptNormals, strip, gradientSum >= 0 ? 1 : -1};
@@ -490,6 +505,10 @@ bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vect
         if (best == -2) return false;
         if (best < 0) {
           if (!in->empty()) return false;
+          if (o.points.size() <= kMaxLoopPoints) {
+            s.polygon(o.points);
+            continue;
+          }
           Vector3d c = Vector3d::Zero();
           for (const Vector3d& p : o.points) c += p;
           c = closestPointOnQuadric(q, c / double(o.points.size()));
@@ -548,11 +567,12 @@ bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vect
       s.zip(b, a);
       std::fill(removed.begin(), removed.end(), 1);
     } else if (!fillLoops(*out, inner, own, s)) {
-      return false;
+      return std::nullopt;
     }
   }
 
-  s.refine(tol);
+  Rebuilt r;
+  r.excess = s.refine(tol, std::size_t(std::count(removed.begin(), removed.end(), char(1))));
 
   // Kept surface triangles, the strip, then the caps.
   TriangleMesh3 result;
@@ -569,8 +589,24 @@ bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vect
   result.append(strip);
   const std::size_t newSurface = result.triangles.size();
   for (std::size_t t = nsurf; t < mesh.triangles.size(); ++t) copy(t);
-  mesh = std::move(result);
-  surface = newSurface;
+  r.mesh = std::move(result);
+  r.surface = newSurface;
+  return r;
+}
+
+}  // namespace
+
+bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vector<HalfSpace>& sharedPlanes,
+                      const std::vector<std::vector<Vector3d>>& polylines, const Quadric& q,
+                      const PolylineTolerance& tol) {
+  std::optional<Rebuilt> best = zipStrip(mesh, surface, sharedPlanes, polylines, q, tol, false);
+  if (!best || best->excess > 1.0) {
+    std::optional<Rebuilt> whole = zipStrip(mesh, surface, sharedPlanes, polylines, q, tol, true);
+    if (whole && (!best || whole->excess < best->excess)) best = std::move(whole);
+  }
+  if (!best) return false;
+  mesh = std::move(best->mesh);
+  surface = best->surface;
   return true;
 }
 

@@ -16,7 +16,13 @@
 //    other piece shares — end to nearest end (a chain's end within kMergeEnds of the path's
 //    becomes it), and each loop this closes is triangulated with the least total area;
 //    two closed paths and no other (a band of surface across the region) are zipped to each
-//    other, none of the piece's own triangles kept.
+//    other, none of the piece's own triangles kept;
+//  - when neither closes the strip (a kept region whose chains do not pair with the paths,
+//    a loop that does not close), or the strip stays over the tolerance after its refinement
+//    (below), the whole piece is rebuilt so: every surface triangle removed, its polylines and
+//    its own edges on unshared planes triangulated and refined; of the two, the one with the
+//    smaller error is kept (a closed mesh over the tolerance rather than a crack: the
+//    tessellation's report measures the error on the final triangles).
 // The polyline vertices are used as given, so two pieces zipped onto one polyline share its
 // vertices bit for bit and every edge of it is used by one triangle on each side. Normals:
 // the kept vertices keep theirs, the new ones get the surface's gradient, turned like the
@@ -42,12 +48,14 @@ constexpr std::size_t kMaxLoopPoints = 1200;
 // between the pieces' surfaces (up to 3e-4 on the torus's reduction pieces).
 constexpr double kMergeEnds = 1e-3;
 constexpr int kStripRefinements = 24;
-// ... nor beyond this many times its triangles as first made (a tolerance far below what the
-// surface's sampling can show, such as a flat piece's chord error of 0, would not stop it).
+// ... nor beyond this many times the triangles it had when first made or that it replaced,
+// whichever is more (a tolerance far below what the surface's sampling can show, such as a
+// flat piece's chord error of 0, would not stop it).
 constexpr std::size_t kStripGrowth = 16;
 
-// False, with the mesh unchanged, when neither way closes the strip (a junction of more
-// than two, a loop that does not close, holds no polyline or is longer than kMaxLoopPoints).
+// False, with the mesh unchanged, when no way closes the strip, not even from nothing kept (a
+// junction of more than two, a loop that does not close, holds no polyline or is longer than
+// kMaxLoopPoints).
 // `tol`: every new triangle whose error (measured at tol.samples as the tessellation's report
 // measures it) exceeds it is split, its midpoints moved onto the surface, up to
 // kStripRefinements rounds or kStripGrowth times the strip; a triangle no longer than the
