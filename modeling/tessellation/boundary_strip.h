@@ -9,7 +9,8 @@
 //    are zipped: from one end, a triangle at a time, advancing on the side whose next vertex
 //    comes first by fraction of arc length;
 //  - a closed loop with nothing kept inside it (a piece whose triangles all touch its shared
-//    planes) is fanned from its centroid moved onto the surface;
+//    planes) is triangulated with the least total area (fanned from its centroid moved onto
+//    the surface beyond kMaxLoopPoints);
 //  - when the paths do not pair up so (a piece whose kept triangles do not separate its
 //    shared planes, or with none kept and an outer boundary): the open paths are joined to
 //    the chains of what is left — the kept chains and the piece's own edges on planes no
