@@ -374,7 +374,36 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
     surface[i] = pieces[i].surface_triangles;
     if (inView[i]) meshes[i] = &pieces[i].mesh;
   }
-  tess::stitchSharedBoundaries(scene.primitives, meshes, surface);
+  tess::SharedBoundarySampling sampling;
+  sampling.samples = options.chord_samples;
+  if (options.pixel_error > 0) {
+    sampling.view = &view;
+    sampling.pixels = options.pixel_error;
+  } else {
+    sampling.chordError.resize(n);
+    for (std::size_t i = 0; i < n; ++i) sampling.chordError[i] = pieces[i].max_chord_error;
+  }
+  const tess::StitchReport stitched = tess::stitchSharedBoundaries(scene.primitives, meshes, surface, sampling);
+  rep.shared_planes = stitched.shared_planes;
+  rep.stitched_pieces = stitched.zipped;
+  rep.unstitched_planes = stitched.refused_planes;
+  rep.unstitched_pieces = stitched.refused_pieces;
+  // A rebuilt piece's errors are measured again, on the triangles it is drawn with.
+#pragma omp parallel for schedule(dynamic, 16)
+  for (long li = 0; li < long(n); ++li) {
+    const std::size_t i = std::size_t(li);
+    if (i >= stitched.rebuilt.size() || !stitched.rebuilt[i]) continue;
+    PrimitiveTessellation& t = pieces[i];
+    const Quadric& q = scene.primitives[i].quadric;
+    const ChordError ce = measureChordError(t.mesh, q, 0, surface[i], options.chord_samples);
+    t.max_chord_error = ce.max;
+    t.mean_chord_error = ce.mean;
+    if (options.pixel_error > 0) {
+      const PixelError pe = measurePixelError(t.mesh, q, view, 0, surface[i], options.chord_samples);
+      t.max_pixel_error = pe.max;
+      t.mean_pixel_error = pe.mean;
+    }
+  }
 
   // The report in scene order (its means are sums in that order), the exact surfaces' meshes
   // made in that order too; the meshes are listed in drawing order (slots), then each is

@@ -105,6 +105,11 @@ struct TessellationReport {
   // pixel_error mode: the achieved projected chord error in pixels, measured (not the bound),
   // over all primitives and exact surfaces (max, and mean over them of their mean).
   double max_pixel_error = 0, mean_pixel_error = 0;
+  // Shared boundaries (shared_boundaries.h), over the pieces stitched (those surely in view):
+  // clip planes with pieces on both sides, pieces rebuilt onto their shared polylines, and
+  // what was left as tessellated, where the facets may crack: planes whose curve could not be
+  // sampled, pieces whose strip could not be closed.
+  std::size_t shared_planes = 0, stitched_pieces = 0, unstitched_planes = 0, unstitched_pieces = 0;
 };
 
 class ScreenView;

@@ -14,7 +14,10 @@
 using namespace qacc;
 
 #ifdef QACC_HAVE_OSMESA
-// Disabled until the shared-boundary stitching is watertight (test_shared_boundaries.cpp).
+// Disabled until every scene here is closed on its shared planes: macropatch_g0/g1 and the
+// torus's reduction pieces are (one polyline per shared boundary, test_shared_boundaries.cpp),
+// bspline_g1 and bspline_volume_g1 not yet; and the pinholes of the closed ones are not
+// checked yet (docs/COMPARE.md "Shared polylines").
 TEST(SharedBoundaryPinholes, DISABLED_FacetsOfPiecesHaveNoCracks) {
   if (!facetRendererAvailable()) GTEST_SKIP() << facetRendererMissingMessage();
   struct Case {

@@ -27,6 +27,7 @@ struct Row {
   double modeled_ms = 0;
   double chord_error = 0;      // facets: max chord error (world units)
   int exact_grid = 0;          // facets: marching grid of the exact surfaces (cubes per axis, 0 = none)
+  std::size_t unstitched = 0;  // facets: shared planes plus pieces left unstitched (TessellationReport), where cracks can show
   Metrics m;
   FrameBuffer fb;
   std::string setting() const {  // "hw", "eps 0.5 px" or "level 128"

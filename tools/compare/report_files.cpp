@@ -41,6 +41,7 @@ void writeCompareJson(const CompareOptions& o, const ComparePlan& plan, const Qu
     j["modeled_ms"] = r.modeled_ms;
     j["chord_error"] = jnum(r.chord_error);
     j["exact_surface_grid"] = r.exact_grid;
+    j["unstitched_shared_boundaries"] = r.unstitched;
     for (const auto& d : metricDefs()) j[d.key] = jnum(d.get(r.m));
     j["wrong_object_px"] = r.m.wrong;
     j["pinholes_px"] = r.m.pinholes;

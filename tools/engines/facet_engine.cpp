@@ -86,6 +86,13 @@ bool runFacetEngine(const std::string& engine, const Scene& scene, const EngineO
                   t.exact_triangles, t.exact_surfaces, t.exact_grid);
     out.notes.push_back(buf);
   }
+  if (t.shared_planes) {
+    std::snprintf(buf, sizeof buf,
+                  "facets: %zu shared clip planes, %zu pieces rebuilt onto their shared boundaries; left as tessellated "
+                  "(cracks possible there): %zu planes, %zu pieces",
+                  t.shared_planes, t.stitched_pieces, t.unstitched_planes, t.unstitched_pieces);
+    out.notes.push_back(buf);
+  }
   std::snprintf(buf, sizeof buf,
                 "facets: tessellate %.2f ms, GL context %.2f ms, upload %.2f ms, draw+finish %.2f ms, read back %.2f ms, "
                 "id pass %.2f ms",

@@ -1,0 +1,613 @@
+// A piece's mesh made to end on its shared polylines (boundary_strip.h).
+#include "modeling/tessellation/boundary_strip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <utility>
+
+#include "modeling/tessellation/piece_boundary.h"    // onPlaneWithinRounding
+#include "modeling/tessellation/screen_error.h"
+#include "modeling/tessellation/surface_clipping.h"  // PointKey
+
+namespace qacc::tess {
+
+using Eigen::Vector3d;
+
+namespace {
+
+struct Path {
+  std::vector<Vector3d> points;
+  bool closed = false;
+};
+
+using Segment = std::pair<Vector3d, Vector3d>;
+
+// The segments joined where their ends are equal: open paths (from an end used once) and
+// closed loops; std::nullopt when a point ends more than two segments.
+std::optional<std::vector<Path>> chain(const std::vector<Segment>& segments) {
+  std::map<Vector3d, std::vector<Vector3d>, PointKey> next;
+  for (const auto& [a, b] : segments) {
+    next[a].push_back(b);
+    next[b].push_back(a);
+  }
+  for (const auto& [p, n] : next)
+    if (n.size() > 2) return std::nullopt;
+  std::map<Vector3d, bool, PointKey> used;
+  std::vector<Path> out;
+  auto walk = [&](const Vector3d& start) {
+    Path path;
+    Vector3d prev = start, at = start;
+    path.points.push_back(start);
+    used[start] = true;
+    for (;;) {
+      const std::vector<Vector3d>& n = next[at];
+      const Vector3d* step = nullptr;
+      for (const Vector3d& c : n)
+        if (!used[c] && !(path.points.size() >= 2 && c == prev)) {
+          step = &c;
+          break;
+        }
+      if (!step) {
+        // Back at the start: a loop.
+        path.closed = path.points.size() >= 3 && std::find(n.begin(), n.end(), start) != n.end();
+        break;
+      }
+      prev = at;
+      at = *step;
+      used[at] = true;
+      path.points.push_back(at);
+    }
+    out.push_back(std::move(path));
+  };
+  for (const auto& [p, n] : next)
+    if (n.size() == 1 && !used[p]) walk(p);
+  for (const auto& [p, n] : next)
+    if (!used[p]) walk(p);
+  return out;
+}
+
+// Cumulative arc length of a path, as fractions of its length (by index when it has none).
+std::vector<double> arcFractions(const std::vector<Vector3d>& p) {
+  std::vector<double> f(p.size(), 0.0);
+  for (std::size_t i = 1; i < p.size(); ++i) f[i] = f[i - 1] + (p[i] - p[i - 1]).norm();
+  const double total = f.empty() ? 0.0 : f.back();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    f[i] = total > 0 ? f[i] / total : (p.size() > 1 ? double(i) / double(p.size() - 1) : 0.0);
+  return f;
+}
+
+// The point at arc fraction t of a path.
+Vector3d atFraction(const std::vector<Vector3d>& p, const std::vector<double>& f, double t) {
+  for (std::size_t i = 1; i < p.size(); ++i)
+    if (f[i] >= t) {
+      const double w = f[i] > f[i - 1] ? (t - f[i - 1]) / (f[i] - f[i - 1]) : 0.0;
+      return p[i - 1] + w * (p[i] - p[i - 1]);
+    }
+  return p.back();
+}
+
+// How far apart two paths run (from their starts, by arc fraction).
+double pathDistance(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b) {
+  const std::vector<double> fa = arcFractions(a), fb = arcFractions(b);
+  double d = 0;
+  for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) d += (atFraction(a, fa, t) - atFraction(b, fb, t)).norm();
+  return d;
+}
+
+// A loop as the open path from its point nearest `to` round to that point again, in the
+// direction that runs nearest `along`.
+std::vector<Vector3d> openLoop(const std::vector<Vector3d>& loop, const Vector3d& to, const std::vector<Vector3d>& along) {
+  std::size_t start = 0;
+  for (std::size_t i = 1; i < loop.size(); ++i)
+    if ((loop[i] - to).squaredNorm() < (loop[start] - to).squaredNorm()) start = i;
+  std::vector<Vector3d> fwd, bwd;
+  for (std::size_t k = 0; k <= loop.size(); ++k) {
+    fwd.push_back(loop[(start + k) % loop.size()]);
+    bwd.push_back(loop[(start + loop.size() - k % loop.size()) % loop.size()]);
+  }
+  return pathDistance(fwd, along) <= pathDistance(bwd, along) ? fwd : bwd;
+}
+
+// Of the kept triangles (removed[t] == 0), only the largest set connected through shared
+// edges stays: an island cut off by the removal (a triangle or two between the strips) would
+// leave a second kept chain with no polyline of its own.
+void removeAllButLargest(const TriangleMesh3& mesh, std::size_t nsurf, std::vector<char>& removed) {
+  std::map<std::pair<Vector3d, Vector3d>, std::vector<std::size_t>,
+           bool (*)(const std::pair<Vector3d, Vector3d>&, const std::pair<Vector3d, Vector3d>&)>
+      byEdge([](const std::pair<Vector3d, Vector3d>& a, const std::pair<Vector3d, Vector3d>& b) {
+        if (a.first != b.first) return lexLess(a.first, b.first);
+        return lexLess(a.second, b.second);
+      });
+  auto pos = [&](std::size_t t, int k) -> const Vector3d& { return mesh.positions[std::size_t(mesh.triangles[t][k])]; };
+  for (std::size_t t = 0; t < nsurf; ++t) {
+    if (removed[t]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const Vector3d &a = pos(t, k), &b = pos(t, (k + 1) % 3);
+      byEdge[lexLess(b, a) ? std::pair{b, a} : std::pair{a, b}].push_back(t);
+    }
+  }
+  std::vector<int> component(nsurf, -1);
+  std::vector<std::size_t> sizes;
+  for (std::size_t t0 = 0; t0 < nsurf; ++t0) {
+    if (removed[t0] || component[t0] >= 0) continue;
+    const int c = int(sizes.size());
+    sizes.push_back(0);
+    std::vector<std::size_t> stack{t0};
+    component[t0] = c;
+    while (!stack.empty()) {
+      const std::size_t t = stack.back();
+      stack.pop_back();
+      ++sizes.back();
+      for (int k = 0; k < 3; ++k) {
+        const Vector3d &a = pos(t, k), &b = pos(t, (k + 1) % 3);
+        for (std::size_t u : byEdge[lexLess(b, a) ? std::pair{b, a} : std::pair{a, b}])
+          if (component[u] < 0) {
+            component[u] = c;
+            stack.push_back(u);
+          }
+      }
+    }
+  }
+  if (sizes.size() <= 1) return;
+  const int largest = int(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
+  for (std::size_t t = 0; t < nsurf; ++t)
+    if (!removed[t] && component[t] != largest) removed[t] = 1;
+}
+
+struct Strip {
+  const Quadric& q;
+  int winding;  // +1: triangles wound counter-clockwise about their normals, -1: clockwise
+  const std::map<Vector3d, Vector3d, PointKey>& keptNormals;
+  TriangleMesh3& out;
+
+  int gradientSign;  // +1: the piece's normals point along the quadric's gradient, -1: against
+
+  Vector3d normalAt(const Vector3d& p) const {
+    auto it = keptNormals.find(p);
+    if (it != keptNormals.end()) return it->second;
+    const Vector3d g = q.gradient(p);
+    return g.norm() > 0 ? Vector3d(double(gradientSign) * g.normalized()) : Vector3d::UnitZ();
+  }
+  void triangle(const Vector3d& a, const Vector3d& b, const Vector3d& c) {
+    if (a == b || b == c || a == c) return;
+    const Vector3d na = normalAt(a), nb = normalAt(b), nc = normalAt(c);
+    const bool flip = winding * (b - a).cross(c - a).dot(na + nb + nc) < 0;
+    const int base = int(out.positions.size());
+    for (const auto& [p, n] : {std::pair{a, na}, flip ? std::pair{c, nc} : std::pair{b, nb},
+                               flip ? std::pair{b, nb} : std::pair{c, nc}}) {
+      out.positions.push_back(p);
+      out.normals.push_back(n);
+    }
+    out.triangles.push_back({base, base + 1, base + 2});
+  }
+  // A closed loop (no point repeated) triangulated with the least total area (dynamic
+  // programming over its sub-polygons).
+  void polygon(const std::vector<Vector3d>& p) {
+    const std::size_t n = p.size();
+    if (n < 3) return;
+    std::vector<double> w(n * n, 0.0);
+    std::vector<std::size_t> arg(n * n, 0);
+    for (std::size_t len = 2; len < n; ++len)
+      for (std::size_t i = 0; i + len < n; ++i) {
+        const std::size_t j = i + len;
+        double best = 1e300;
+        for (std::size_t k = i + 1; k < j; ++k) {
+          const double c = w[i * n + k] + w[k * n + j] + 0.5 * (p[k] - p[i]).cross(p[j] - p[i]).norm();
+          if (c < best) {
+            best = c;
+            arg[i * n + j] = k;
+          }
+        }
+        w[i * n + j] = best;
+      }
+    std::vector<std::pair<std::size_t, std::size_t>> todo{{0, n - 1}};
+    while (!todo.empty()) {
+      const auto [i, j] = todo.back();
+      todo.pop_back();
+      if (j < i + 2) continue;
+      const std::size_t k = arg[i * n + j];
+      triangle(p[i], p[k], p[j]);
+      todo.push_back({i, k});
+      todo.push_back({k, j});
+    }
+  }
+  // The error of new triangle t, measured as the scene's report measures it (the samples of
+  // measurePixelError in a view, of measureChordError otherwise), against the tolerance.
+  double excess(std::size_t t, const PolylineTolerance& tol) const {
+    if (tol.view && tol.pixels > 0)
+      return measurePixelError(out, q, *tol.view, t, 1, tol.samples).max / tol.pixels;
+    return tol.world > 0 ? measureChordError(out, q, t, 1, tol.samples).max / tol.world : 0.0;
+  }
+  // Until every new triangle is within the tolerance (by excess()), or kStripRefinements
+  // rounds, or the strip has kStripGrowth times as many triangles as it had or as it replaced: each triangle over it is split, at most one split per triangle and round. Its
+  // longest edge shared with another new triangle is halved in both (the midpoint moved onto
+  // the surface); a triangle with no such edge (all three on the polylines or the kept chains,
+  // which are never split, so both sides keep their vertices) gets its centroid, moved onto
+  // the surface, as a third vertex of three triangles.
+  // Returns the largest excess() left (at most 1 when every new triangle is within the tolerance).
+  double refine(const PolylineTolerance& tol, std::size_t replaced) {
+    using Key = std::pair<Vector3d, Vector3d>;
+    auto less = [](const Key& a, const Key& b) {
+      if (a.first != b.first) return lexLess(a.first, b.first);
+      return lexLess(a.second, b.second);
+    };
+    auto at = [&](std::size_t t, int k) -> const Vector3d& { return out.positions[std::size_t(out.triangles[t][k])]; };
+    auto keyOf = [](const Vector3d& a, const Vector3d& b) { return lexLess(b, a) ? Key{b, a} : Key{a, b}; };
+    // A point of the surface near m: its closest point, unless that lies farther than
+    // `reach` (another sheet, or no convergence).
+    auto ontoSurface = [&](const Vector3d& m, double reach, Vector3d& p) {
+      p = closestPointOnQuadric(q, m);
+      return p.allFinite() && (p - m).norm() <= reach;
+    };
+    // A triangle no longer than the tolerance (its longest edge, in pixels in a view) is not
+    // split: whatever its measured error, halving it would not be seen.
+    auto longerThanTolerance = [&](std::size_t t) {
+      double longest = 0;
+      for (int k = 0; k < 3; ++k) {
+        const Vector3d &a = at(t, k), &b = at(t, (k + 1) % 3);
+        longest = std::max(longest, tol.view && tol.pixels > 0 ? (tol.view->project(a) - tol.view->project(b)).norm()
+                                                               : (b - a).norm());
+      }
+      return longest > (tol.view && tol.pixels > 0 ? tol.pixels : tol.world);
+    };
+    const std::size_t budget = kStripGrowth * std::max<std::size_t>({out.triangles.size(), replaced, 1});
+    for (int round = 0; round < kStripRefinements && out.triangles.size() < budget; ++round) {
+      std::vector<std::size_t> over;
+      for (std::size_t t = 0; t < out.triangles.size(); ++t)
+        if (longerThanTolerance(t) && excess(t, tol) > 1.0) over.push_back(t);
+      if (over.empty()) return 1.0;
+      std::map<Key, std::vector<std::size_t>, decltype(less)> uses(less);
+      for (std::size_t t = 0; t < out.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) uses[keyOf(at(t, k), at(t, (k + 1) % 3))].push_back(t);
+      std::vector<char> busy(out.triangles.size(), 0);
+      std::map<Key, Vector3d, decltype(less)> mid(less);
+      std::map<std::size_t, Vector3d> centre;
+      for (std::size_t t : over) {
+        if (busy[t]) continue;
+        int best = -1;
+        double bestLength = -1;
+        bool anyShared = false;
+        for (int k = 0; k < 3; ++k) {
+          const Vector3d &a = at(t, k), &b = at(t, (k + 1) % 3);
+          const auto& ts = uses[keyOf(a, b)];
+          if (ts.size() != 2) continue;
+          anyShared = true;
+          const std::size_t other = ts[0] == t ? ts[1] : ts[0];
+          if (busy[other] || (b - a).norm() <= bestLength) continue;
+          best = k;
+          bestLength = (b - a).norm();
+        }
+        Vector3d p;
+        if (best >= 0) {
+          const Vector3d &a = at(t, best), &b = at(t, (best + 1) % 3);
+          if (!ontoSurface(0.5 * (a + b), 0.5 * (b - a).norm(), p)) continue;
+          const auto& ts = uses[keyOf(a, b)];
+          busy[ts[0]] = busy[ts[1]] = 1;
+          mid.emplace(keyOf(a, b), p);
+        } else if (!anyShared) {
+          const Vector3d c = (at(t, 0) + at(t, 1) + at(t, 2)) / 3.0;
+          const double size = std::max({(at(t, 1) - at(t, 0)).norm(), (at(t, 2) - at(t, 1)).norm(),
+                                        (at(t, 0) - at(t, 2)).norm()});
+          if (!ontoSurface(c, 0.5 * size, p)) continue;
+          busy[t] = 1;
+          centre.emplace(t, p);
+        }
+      }
+      if (mid.empty() && centre.empty()) break;
+      TriangleMesh3 next;
+      std::swap(next, out);
+      for (std::size_t t = 0; t < next.triangles.size(); ++t) {
+        const Vector3d v[3] = {next.positions[std::size_t(next.triangles[t][0])],
+                               next.positions[std::size_t(next.triangles[t][1])],
+                               next.positions[std::size_t(next.triangles[t][2])]};
+        const Vector3d n[3] = {next.normals[std::size_t(next.triangles[t][0])],
+                               next.normals[std::size_t(next.triangles[t][1])],
+                               next.normals[std::size_t(next.triangles[t][2])]};
+        auto emit = [&](const Vector3d& a, const Vector3d& na, const Vector3d& b, const Vector3d& nb,
+                        const Vector3d& c, const Vector3d& nc) {
+          const int base = int(out.positions.size());
+          out.positions.insert(out.positions.end(), {a, b, c});
+          out.normals.insert(out.normals.end(), {na, nb, nc});
+          out.triangles.push_back({base, base + 1, base + 2});
+        };
+        if (auto it = centre.find(t); it != centre.end()) {
+          const Vector3d& p = it->second;
+          const Vector3d np = normalAt(p);
+          for (int k = 0; k < 3; ++k) emit(v[k], n[k], v[(k + 1) % 3], n[(k + 1) % 3], p, np);
+          continue;
+        }
+        int split = -1;
+        Vector3d p;
+        for (int k = 0; k < 3 && split < 0; ++k) {
+          auto it = mid.find(keyOf(v[k], v[(k + 1) % 3]));
+          if (it != mid.end()) {
+            split = k;
+            p = it->second;
+          }
+        }
+        if (split < 0) {
+          emit(v[0], n[0], v[1], n[1], v[2], n[2]);
+          continue;
+        }
+        const int a = split, b = (split + 1) % 3, c = (split + 2) % 3;
+        const Vector3d np = normalAt(p);
+        emit(v[a], n[a], p, np, v[c], n[c]);
+        emit(p, np, v[b], n[b], v[c], n[c]);
+      }
+    }
+    double worst = 0;
+    for (std::size_t t = 0; t < out.triangles.size(); ++t)
+      if (longerThanTolerance(t)) worst = std::max(worst, excess(t, tol));
+    return worst;
+  }
+  // Kept chain `in` and new boundary `o`, both from the same end.
+  void zip(const std::vector<Vector3d>& in, const std::vector<Vector3d>& o) {
+    const std::vector<double> fi = arcFractions(in), fo = arcFractions(o);
+    std::size_t a = 0, b = 0;
+    while (a + 1 < in.size() || b + 1 < o.size()) {
+      const bool onO = a + 1 >= in.size() || (b + 1 < o.size() && fo[b + 1] <= fi[a + 1]);
+      if (onO) {
+        triangle(in[a], o[b], o[b + 1]);
+        ++b;
+      } else {
+        triangle(in[a], o[b], in[a + 1]);
+        ++a;
+      }
+    }
+  }
+};
+
+
+// Open new boundary paths joined to the chains of what is left (kept chains and the piece's
+// own edges on unshared planes), each end of a path to the nearest end of a chain (that end
+// replaced by the path's when within kMergeEnds, else joined by an edge); the loops this
+// closes triangulated one by one. False when a path is closed, a loop does not close or
+// holds no new boundary, or is longer than kMaxLoopPoints.
+bool fillLoops(const std::vector<Path>& out, const std::vector<Segment>& inner, const std::vector<Segment>& own,
+               Strip& s) {
+  std::vector<Segment> rest = inner;
+  rest.insert(rest.end(), own.begin(), own.end());
+  const auto left = chain(rest);
+  if (!left) return false;
+  std::vector<Vector3d> ends;
+  for (const Path& k : *left)
+    if (!k.closed) {
+      ends.push_back(k.points.front());
+      ends.push_back(k.points.back());
+    }
+  std::vector<Segment> all = rest;
+  std::map<Vector3d, bool, PointKey> isNew;
+  for (const Path& o : out) {
+    if (o.closed) return false;
+    for (std::size_t i = 0; i + 1 < o.points.size(); ++i) all.push_back({o.points[i], o.points[i + 1]});
+    for (const Vector3d& p : o.points) isNew[p] = true;
+    for (const Vector3d* e : {&o.points.front(), &o.points.back()}) {
+      std::size_t best = ends.size();
+      for (std::size_t k = 0; k < ends.size(); ++k)
+        if (best == ends.size() || (ends[k] - *e).squaredNorm() < (ends[best] - *e).squaredNorm()) best = k;
+      if (best == ends.size()) return false;
+      const Vector3d k = ends[best];
+      ends.erase(ends.begin() + std::ptrdiff_t(best));
+      if (k == *e) continue;
+      if ((k - *e).norm() <= kMergeEnds * (1 + e->norm())) {
+        // The piece's own corner, within its gap to the neighbour: it becomes the path's end
+        // (no sliver edge between the two on the shared plane).
+        for (Segment& sgm : all) {
+          if (sgm.first == k) sgm.first = *e;
+          if (sgm.second == k) sgm.second = *e;
+        }
+      } else {
+        all.push_back({*e, k});
+      }
+    }
+  }
+  const auto loops = chain(all);
+  if (!loops) return false;
+  for (const Path& l : *loops) {
+    if (!l.closed || l.points.size() > kMaxLoopPoints) return false;
+    if (std::none_of(l.points.begin(), l.points.end(), [&](const Vector3d& p) { return isNew.count(p) > 0; }))
+      return false;
+  }
+  for (const Path& l : *loops) s.polygon(l.points);
+  return true;
+}
+
+
+// zipBoundaryStrip with the triangles that touch a shared plane removed (removeAll false), or
+// with every surface triangle removed, the piece rebuilt from its polylines and its own edges
+// on unshared planes alone (removeAll true).
+struct Rebuilt {
+  TriangleMesh3 mesh;
+  std::size_t surface = 0;
+  double excess = 0;  // the strip's largest error over the tolerance (Strip::refine)
+};
+std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
+                                const std::vector<HalfSpace>& sharedPlanes,
+                                const std::vector<std::vector<Vector3d>>& polylines, const Quadric& q,
+                                const PolylineTolerance& tol, bool removeAll) {
+  if (polylines.empty()) return std::nullopt;
+  const std::size_t nsurf = std::min(surface, mesh.triangles.size());
+  auto pos = [&](std::size_t t, int k) -> const Vector3d& { return mesh.positions[std::size_t(mesh.triangles[t][k])]; };
+  auto touches = [&](const Vector3d& x) {
+    for (const HalfSpace& h : sharedPlanes)
+      if (onPlaneWithinRounding(h, x)) return true;
+    return false;
+  };
+  std::vector<char> removed(nsurf, removeAll ? 1 : 0);
+  if (!removeAll) {
+    for (std::size_t t = 0; t < nsurf; ++t)
+      for (int k = 0; k < 3 && !removed[t]; ++k) removed[t] = touches(pos(t, k));
+    removeAllButLargest(mesh, nsurf, removed);
+  }
+
+  // Edges of the kept triangles used once that a removed triangle uses too: the inner chains.
+  using EdgeKey = std::pair<Vector3d, Vector3d>;
+  auto key = [](const Vector3d& a, const Vector3d& b) { return lexLess(b, a) ? EdgeKey{b, a} : EdgeKey{a, b}; };
+  struct EdgeLess {
+    bool operator()(const EdgeKey& a, const EdgeKey& b) const {
+      if (a.first != b.first) return lexLess(a.first, b.first);
+      return lexLess(a.second, b.second);
+    }
+  };
+  std::map<EdgeKey, int, EdgeLess> keptUse;
+  std::map<EdgeKey, bool, EdgeLess> removedEdge;
+  std::map<Vector3d, Vector3d, PointKey> keptNormals;
+  double windingSum = 0;
+  for (std::size_t t = 0; t < nsurf; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const EdgeKey e = key(pos(t, k), pos(t, (k + 1) % 3));
+      if (removed[t]) {
+        removedEdge[e] = true;
+      } else {
+        ++keptUse[e];
+        keptNormals.emplace(pos(t, k), mesh.normals[std::size_t(mesh.triangles[t][k])]);
+      }
+    }
+  double gradientSum = 0;
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+    gradientSum += q.gradient(mesh.positions[v]).dot(mesh.normals[v]) >= 0 ? 1 : -1;
+  for (std::size_t t = 0; t < nsurf; ++t) {
+    const Vector3d n = mesh.normals[std::size_t(mesh.triangles[t][0])] + mesh.normals[std::size_t(mesh.triangles[t][1])] +
+                       mesh.normals[std::size_t(mesh.triangles[t][2])];
+    windingSum += (pos(t, 1) - pos(t, 0)).cross(pos(t, 2) - pos(t, 0)).dot(n) > 0 ? 1 : -1;
+  }
+  std::map<EdgeKey, int, EdgeLess> allUse;
+  for (std::size_t t = 0; t < nsurf; ++t)
+    for (int k = 0; k < 3; ++k) ++allUse[key(pos(t, k), pos(t, (k + 1) % 3))];
+  auto onSharedPlane = [&](const EdgeKey& e) {
+    for (const HalfSpace& h : sharedPlanes)
+      if (onPlaneWithinRounding(h, e.first) && onPlaneWithinRounding(h, e.second)) return true;
+    return false;
+  };
+  std::vector<Segment> inner, outer;
+  for (const auto& [e, uses] : keptUse)
+    if (uses == 1 && removedEdge.count(e)) inner.push_back(e);
+  for (const auto& line : polylines)
+    for (std::size_t i = 0; i + 1 < line.size(); ++i)
+      if (line[i] != line[i + 1]) outer.push_back({line[i], line[i + 1]});
+  const auto in = chain(inner), out = chain(outer);
+  if (!in || !out || out->empty()) return std::nullopt;
+
+  TriangleMesh3 strip;
+  Strip s{q, windingSum >= 0 ? 1 : -1, keptNormals, strip, gradientSum >= 0 ? 1 : -1};
+  // Each new boundary path paired with a kept chain (zipped), or a closed one with nothing
+  // kept fanned.
+  auto pairUp = [&]() -> bool {
+    std::vector<bool> paired(in->size(), false);
+    for (const Path& o : *out) {
+      if (o.closed) {
+        // A loop: the kept loop nearest it, or a fan when nothing is kept.
+        int best = -1;
+        for (std::size_t k = 0; k < in->size(); ++k)
+          if ((*in)[k].closed && !paired[k]) best = best < 0 ? int(k) : -2;
+        if (best == -2) return false;
+        if (best < 0) {
+          if (!in->empty()) return false;
+          if (o.points.size() <= kMaxLoopPoints) {
+            s.polygon(o.points);
+            continue;
+          }
+          Vector3d c = Vector3d::Zero();
+          for (const Vector3d& p : o.points) c += p;
+          c = closestPointOnQuadric(q, c / double(o.points.size()));
+          std::vector<Vector3d> ring = o.points;
+          ring.push_back(o.points.front());
+          // Wound like the other triangles of the piece, by the surface's gradient.
+          for (std::size_t i = 0; i + 1 < ring.size(); ++i) s.triangle(c, ring[i], ring[i + 1]);
+          continue;
+        }
+        paired[std::size_t(best)] = true;
+        std::vector<Vector3d> ring = o.points;
+        ring.push_back(o.points.front());
+        const std::vector<Vector3d> kept = openLoop((*in)[std::size_t(best)].points, ring.front(), ring);
+        s.zip(kept, ring);
+        continue;
+      }
+      // An open path: the open chain whose ends are nearest its ends.
+      int best = -1;
+      bool reversed = false;
+      double bestDist = 1e300;
+      for (std::size_t k = 0; k < in->size(); ++k) {
+        const Path& c = (*in)[k];
+        if (c.closed || paired[k]) continue;
+        const double fwd = (c.points.front() - o.points.front()).norm() + (c.points.back() - o.points.back()).norm();
+        const double bwd = (c.points.back() - o.points.front()).norm() + (c.points.front() - o.points.back()).norm();
+        if (std::min(fwd, bwd) < bestDist) {
+          bestDist = std::min(fwd, bwd);
+          best = int(k);
+          reversed = bwd < fwd;
+        }
+      }
+      if (best < 0) return false;
+      paired[std::size_t(best)] = true;
+      std::vector<Vector3d> kept = (*in)[std::size_t(best)].points;
+      if (reversed) std::reverse(kept.begin(), kept.end());
+      s.zip(kept, o.points);
+    }
+    for (bool p : paired)
+      if (!p) return false;
+    return true;
+  };
+  if (!pairUp()) {
+    // The region the removal left, bounded by loops of kept chains, the piece's own edges on
+    // planes no other piece shares, and the polylines: each loop triangulated on its own.
+    strip = TriangleMesh3();
+    std::vector<Segment> own;
+    for (const auto& [e, uses] : allUse)
+      if (uses == 1 && removedEdge.count(e) && !onSharedPlane(e)) own.push_back(e);
+    const bool twoLoops = out->size() == 2 && (*out)[0].closed && (*out)[1].closed;
+    if (twoLoops) {
+      // A band (the surface enters the region through one loop and leaves through the
+      // other): zipped from loop to loop, nothing kept between them.
+      std::vector<Vector3d> a = (*out)[0].points, b = (*out)[1].points;
+      a.push_back(a.front());
+      b = openLoop(b, a.front(), a);
+      s.zip(b, a);
+      std::fill(removed.begin(), removed.end(), 1);
+    } else if (!fillLoops(*out, inner, own, s)) {
+      return std::nullopt;
+    }
+  }
+
+  Rebuilt r;
+  r.excess = s.refine(tol, std::size_t(std::count(removed.begin(), removed.end(), char(1))));
+
+  // Kept surface triangles, the strip, then the caps.
+  TriangleMesh3 result;
+  auto copy = [&](std::size_t t) {
+    const int base = int(result.positions.size());
+    for (int k = 0; k < 3; ++k) {
+      result.positions.push_back(pos(t, k));
+      result.normals.push_back(mesh.normals[std::size_t(mesh.triangles[t][k])]);
+    }
+    result.triangles.push_back({base, base + 1, base + 2});
+  };
+  for (std::size_t t = 0; t < nsurf; ++t)
+    if (!removed[t]) copy(t);
+  result.append(strip);
+  const std::size_t newSurface = result.triangles.size();
+  for (std::size_t t = nsurf; t < mesh.triangles.size(); ++t) copy(t);
+  r.mesh = std::move(result);
+  r.surface = newSurface;
+  return r;
+}
+
+}  // namespace
+
+bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vector<HalfSpace>& sharedPlanes,
+                      const std::vector<std::vector<Vector3d>>& polylines, const Quadric& q,
+                      const PolylineTolerance& tol) {
+  std::optional<Rebuilt> best = zipStrip(mesh, surface, sharedPlanes, polylines, q, tol, false);
+  if (!best || best->excess > 1.0) {
+    std::optional<Rebuilt> whole = zipStrip(mesh, surface, sharedPlanes, polylines, q, tol, true);
+    if (whole && (!best || whole->excess < best->excess)) best = std::move(whole);
+  }
+  if (!best) return false;
+  mesh = std::move(best->mesh);
+  surface = best->surface;
+  return true;
+}
+
+}  // namespace qacc::tess
