@@ -155,13 +155,14 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, const Level& lv, con
 
 // The chord error (and with a view the pixel error) of the tessellation that is kept: the
 // choices between tries (tessellateReaching, tessellateCovering) read their triangles, reach
-// and boundary defects only, so the errors are measured once, on the one returned.
-void measureErrors(PrimitiveTessellation& t, const Primitive& prim, const Level& lv, int chordSamples) {
+// and boundary defects only, so the errors are measured once, on the one returned (and again
+// after stitching, on a piece whose strips were rebuilt). `view`: the pixel error too.
+void measureErrors(PrimitiveTessellation& t, const Primitive& prim, const ScreenView* view, int chordSamples) {
   const ChordError ce = measureChordError(t.mesh, prim.quadric, 0, t.surface_triangles, chordSamples);
   t.max_chord_error = ce.max;
   t.mean_chord_error = ce.mean;
-  if (lv.view) {
-    const PixelError pe = measurePixelError(t.mesh, prim.quadric, *lv.view, 0, t.surface_triangles, chordSamples);
+  if (view) {
+    const PixelError pe = measurePixelError(t.mesh, prim.quadric, *view, 0, t.surface_triangles, chordSamples);
     t.max_pixel_error = pe.max;
     t.mean_pixel_error = pe.mean;
   }
@@ -234,7 +235,7 @@ PrimitiveTessellation coveringTry(const Primitive& prim, const Level& lv, const 
 PrimitiveTessellation tessellateCovering(const Primitive& prim, const Level& lv, const Camera* camera, double aspect,
                                          int chordSamples) {
   PrimitiveTessellation t = coveringTry(prim, lv, camera, aspect);
-  measureErrors(t, prim, lv, chordSamples);
+  measureErrors(t, prim, lv.view, chordSamples);
   return t;
 }
 
@@ -265,7 +266,7 @@ PrimitiveTessellation tessellateToPixels(const Primitive& prim, const Tessellati
     Level coarse;
     coarse.target = 8;
     PrimitiveTessellation t = tessellateOnce(prim, coarse, camera, aspect);
-    measureErrors(t, prim, coarse, options.chord_samples);
+    measureErrors(t, prim, coarse.view, options.chord_samples);
     return t;
   }
   Level lv;
@@ -393,16 +394,8 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
   for (long li = 0; li < long(n); ++li) {
     const std::size_t i = std::size_t(li);
     if (i >= stitched.rebuilt.size() || !stitched.rebuilt[i]) continue;
-    PrimitiveTessellation& t = pieces[i];
-    const Quadric& q = scene.primitives[i].quadric;
-    const ChordError ce = measureChordError(t.mesh, q, 0, surface[i], options.chord_samples);
-    t.max_chord_error = ce.max;
-    t.mean_chord_error = ce.mean;
-    if (options.pixel_error > 0) {
-      const PixelError pe = measurePixelError(t.mesh, q, view, 0, surface[i], options.chord_samples);
-      t.max_pixel_error = pe.max;
-      t.mean_pixel_error = pe.mean;
-    }
+    pieces[i].surface_triangles = surface[i];
+    measureErrors(pieces[i], scene.primitives[i], options.pixel_error > 0 ? &view : nullptr, options.chord_samples);
   }
 
   // The report in scene order (its means are sums in that order), the exact surfaces' meshes
