@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -88,6 +89,9 @@ struct SceneCase {
   bool closed;  // a closed surface: no open edge at all
   bool heavy;   // a minute or more under the sanitizers: left to the Release suite
 };
+
+// GoogleTest (and ctest's test list) name a case by its file, not by its bytes.
+void PrintTo(const SceneCase& c, std::ostream* os) { *os << c.file; }
 
 std::string caseName(const ::testing::TestParamInfo<SceneCase>& info) {
   std::string n = info.param.file;

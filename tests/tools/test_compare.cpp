@@ -216,8 +216,12 @@ TEST(CompareCommand, AlgebraicSceneFacetsAreTrianglesOfTheTrueSurface) {
   // The true surface's budget: triangles per cell of the torus's level-8 Kuhn mesh (6 x 8^3),
   // whatever view culling kept (modeling/tessellation/exact_facets.h).
   const double cells = 6.0 * 8 * 8 * 8;
+  EXPECT_EQ(j["format"], "qacc-compare/3");
   for (const auto* r : {&coarse, &fine}) {
     EXPECT_GT((*r)["exact_surface_grid"].get<int>(), 0);
+    // One true surface: no shared plane between pieces, nothing left unstitched.
+    EXPECT_EQ((*r)["unstitched_shared_planes"].get<int>(), 0);
+    EXPECT_EQ((*r)["unstitched_pieces"].get<int>(), 0);
     const double budget = (*r)["level"].get<double>() * cells;
     EXPECT_GT((*r)["primitives"].get<double>(), 0.6 * budget);
     EXPECT_LT((*r)["primitives"].get<double>(), 1.6 * budget);

@@ -27,7 +27,8 @@ struct Row {
   double modeled_ms = 0;
   double chord_error = 0;      // facets: max chord error (world units)
   int exact_grid = 0;          // facets: marching grid of the exact surfaces (cubes per axis, 0 = none)
-  std::size_t unstitched = 0;  // facets: shared planes plus pieces left unstitched (TessellationReport), where cracks can show
+  // facets: shared planes and pieces left as tessellated, unstitched (TessellationReport): where cracks can show
+  std::size_t unstitched_planes = 0, unstitched_pieces = 0;
   Metrics m;
   FrameBuffer fb;
   std::string setting() const {  // "hw", "eps 0.5 px" or "level 128"

@@ -38,7 +38,8 @@ FacetRuns renderFacetSettings(const Scene& scene, const ComparePlan& plan, const
     r.chord_error = run.tessellation.max_chord_error;
     r.achieved_px = s.tolerance_px > 0 ? achievedMaxPixelError(run.tessellation) : 0;
     r.exact_grid = run.tessellation.exact_grid;
-    r.unstitched = run.tessellation.unstitched_pieces + run.tessellation.unstitched_planes;
+    r.unstitched_planes = run.tessellation.unstitched_planes;
+    r.unstitched_pieces = run.tessellation.unstitched_pieces;
     f.exact_surfaces = run.tessellation.exact_surfaces;
     f.gl_renderer = run.render.gl_renderer;
     f.gl_version = run.render.gl_version;
@@ -56,9 +57,9 @@ FacetRuns renderFacetSettings(const Scene& scene, const ComparePlan& plan, const
     std::fprintf(stderr, "  facets %s: %zu triangles%s%s, %.1f ms (draw %.1f ms), %llu cycles, silhouette %.2f px\n",
                  r.setting().c_str(), r.primitives,
                  r.exact_grid ? (" (true surface: marching grid " + std::to_string(r.exact_grid) + ")").c_str() : "",
-                 r.unstitched
-                     ? (", " + std::to_string(run.tessellation.unstitched_planes) + " shared planes and " +
-                        std::to_string(run.tessellation.unstitched_pieces) + " pieces left unstitched")
+                 r.unstitched_planes + r.unstitched_pieces
+                     ? (", " + std::to_string(r.unstitched_planes) + " shared planes and " +
+                        std::to_string(r.unstitched_pieces) + " pieces left unstitched")
                            .c_str()
                      : "",
                  r.host_ms, r.draw_ms, (unsigned long long)r.cycles, r.m.hausdorff);

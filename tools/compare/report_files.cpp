@@ -41,7 +41,8 @@ void writeCompareJson(const CompareOptions& o, const ComparePlan& plan, const Qu
     j["modeled_ms"] = r.modeled_ms;
     j["chord_error"] = jnum(r.chord_error);
     j["exact_surface_grid"] = r.exact_grid;
-    j["unstitched_shared_boundaries"] = r.unstitched;
+    j["unstitched_shared_planes"] = r.unstitched_planes;
+    j["unstitched_pieces"] = r.unstitched_pieces;
     for (const auto& d : metricDefs()) j[d.key] = jnum(d.get(r.m));
     j["wrong_object_px"] = r.m.wrong;
     j["pinholes_px"] = r.m.pinholes;
@@ -50,7 +51,7 @@ void writeCompareJson(const CompareOptions& o, const ComparePlan& plan, const Qu
     return j;
   };
   nlohmann::json out;
-  out["format"] = "qacc-compare/2";
+  out["format"] = "qacc-compare/3";  // /3: unstitched_shared_boundaries split into planes and pieces
   out["qacc_version"] = qaccVersion();
   out["scene"] = scene.name;
   out["scene_file"] = o.scene_path;
