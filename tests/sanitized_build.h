@@ -20,11 +20,13 @@ constexpr bool kSanitizedBuild = false;
 
 // Under the sanitizers the sweeps over every shipped scene leave out the B-spline volume
 // with G1 knots: its three builds of 107 k cells took 538 s of the sampled view-culling
-// sweep's 590 s under ASan (docs/PERFORMANCE.md), against ctest's 600 s limit. The Release
-// run sweeps it; the sanitized run still builds and renders it in
-// SimplexSpline3.ShippedVolumeScenesRenderWithoutPinholes. The other tests that sample under
-// the sanitizers say so where they do (grep kSanitizedBuild): together they brought the
-// sanitized suite from about 1 610 s to the figure in docs/PERFORMANCE.md.
+// sweep's 590 s under ASan (docs/PERFORMANCE.md), against ctest's 600 s limit, and its one
+// build in SimplexSpline3.ShippedVolumeScenesRenderWithoutPinholes 145 s. The Release run
+// builds and sweeps it; under the sanitizers G1 volumes are built on a small grid
+// (SimplexSpline3.SceneTypeEmitsTheCrossedCells), the same code on fewer cells. The other
+// tests that sample under the sanitizers say so where they do (grep kSanitizedBuild): each
+// keeps every code path it reaches and leaves the breadth (more views, tolerances, levels,
+// trials) to the Release run, which checks the same cases and more.
 inline bool leftOutOfSanitizedSweeps(std::string_view sceneStem) {
   return kSanitizedBuild && sceneStem == "bspline_volume_g1";
 }

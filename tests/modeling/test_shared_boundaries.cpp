@@ -112,7 +112,10 @@ TEST_P(SharedBoundaryScene, EveryInteriorEdgeIsUsedTwiceWithinTheTolerance) {
   const SceneCase& sc = GetParam();
   if (kSanitizedBuild && sc.heavy) GTEST_SKIP() << sc.file << ": left to the Release suite (tests/sanitized_build.h)";
   const Scene s = loadShipped(sc.file);
-  for (double eps : {2.0, 0.5}) {
+  // Under the sanitizers the coarser tolerance only: the same strips, refinement and rebuilds,
+  // on fewer triangles (tests/sanitized_build.h).
+  const std::vector<double> tolerances = kSanitizedBuild ? std::vector<double>{2.0} : std::vector<double>{2.0, 0.5};
+  for (double eps : tolerances) {
     TessellationOptions o;
     o.pixel_error = eps;
     TessellationReport rep;

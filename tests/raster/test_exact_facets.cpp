@@ -21,6 +21,7 @@
 #include "raster/osmesa/osmesa_renderer.h"
 #include "raster/metrics/psnr.h"
 #include "raster/reference/reference_renderer.h"
+#include "tests/sanitized_build.h"
 
 using namespace qacc;
 using Eigen::Vector3d;
@@ -139,6 +140,7 @@ TEST(ExactFacets, SceneTessellatesTheTrueSurfaceNotThePieces) {
   ASSERT_EQ(sphere.object, 1);
   std::size_t previous = 0;
   for (int level : {8, 32}) {
+    if (kSanitizedBuild && level == 32) continue;  // level 8 only (tests/sanitized_build.h)
     TessellationOptions to;
     to.triangles = level;
     TessellationReport rep;
@@ -172,7 +174,7 @@ TEST(ExactFacets, SceneTessellatesTheTrueSurfaceNotThePieces) {
   // "reference": "pieces" has no exact surface: its pieces are tessellated as before.
   const Scene pieces = parseScene(torusScene(R"js(, "reference": "pieces")js"), "pieces.json", ".");
   TessellationReport rep;
-  tessellateScene(pieces, TessellationOptions(), &rep);
+  tessellateScene(pieces, TessellationOptions{8}, &rep);  // 8 triangles a piece: which path, not how fine
   EXPECT_EQ(rep.exact_surfaces, 0u);
   EXPECT_EQ(rep.primitives, pieces.primitives.size());
 }
@@ -188,6 +190,7 @@ TEST(ExactFacets, MeshDoesNotDependOnViewCulling) {
   ASSERT_GT(culled.primitives.size(), 0u);
   ASSERT_LT(2 * culled.primitives.size(), unculled.primitives.size());
   for (const TessellationOptions& to : {TessellationOptions{6}, TessellationOptions{32}}) {
+    if (kSanitizedBuild && to.triangles == 32) continue;  // level 6 only (tests/sanitized_build.h)
     TessellationReport a, b;
     const TriangleMesh3 ma = tessellateScene(culled, to, &a), mb = tessellateScene(unculled, to, &b);
     EXPECT_EQ(a.exact_triangles, b.exact_triangles);
@@ -197,7 +200,7 @@ TEST(ExactFacets, MeshDoesNotDependOnViewCulling) {
   }
   // By pixel error too (the budget quadrupled from 64 per cell until the bound holds).
   TessellationOptions pe;
-  pe.pixel_error = 1.0;
+  pe.pixel_error = kSanitizedBuild ? 4.0 : 1.0;  // fewer budget steps under the sanitizers (tests/sanitized_build.h)
   TessellationReport a, b;
   EXPECT_EQ(tessellateScene(culled, pe, &a).positions, tessellateScene(unculled, pe, &b).positions);
   EXPECT_EQ(a.exact_grid, b.exact_grid);

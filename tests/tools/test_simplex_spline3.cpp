@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <random>
@@ -21,6 +22,7 @@
 #include "modeling/loader/scene_loader.h"
 #include "modeling/splines/simplex_spline3.h"
 #include "raster/reference/reference_renderer.h"
+#include "tests/sanitized_build.h"
 #include "tests/tools/render_checks.h"
 #include "tools/engines/engine.h"
 
@@ -454,6 +456,9 @@ TEST(SimplexSpline3, ShippedVolumeScenesRenderWithoutPinholes) {
   // no pinhole, covers what the exact render of the same cells covers, and neither shows the
   // inside of the closed surface; the check fails when a cell is removed.
   for (const char* name : {"/scenes/bspline_volume_g0.json", "/scenes/bspline_volume_g1.json"}) {
+    // The G1 volume's build of 107 k cells (145 s under ASan) is left to the Release run under
+    // the sanitizers; SceneTypeEmitsTheCrossedCells builds G1 volumes there (tests/sanitized_build.h).
+    if (leftOutOfSanitizedSweeps(std::filesystem::path(name).stem().string())) continue;
     Scene s = loadScene(std::string(QACC_SOURCE_DIR) + name);
     s.width = 200;
     s.height = 150;
