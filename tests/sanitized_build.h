@@ -20,8 +20,8 @@ constexpr bool kSanitizedBuild = false;
 
 // Under the sanitizers the sweeps over every shipped scene leave out the B-spline volume
 // with G1 knots: its three builds of 107 k cells took 538 s of the sampled view-culling
-// sweep's 590 s under ASan (docs/PERFORMANCE.md), against ctest's 600 s limit, and its one
-// build in SimplexSpline3.ShippedVolumeScenesRenderWithoutPinholes 145 s. The Release run
+// sweep's 590 s under ASan (docs/PERFORMANCE.md), against ctest's 600 s limit, and loading it alone
+// (SimplexSpline3.ShippedVolumeScenesRenderWithoutPinholes) 145 s at load 4. The Release run
 // builds and sweeps it; under the sanitizers G1 volumes are built on a small grid
 // (SimplexSpline3.SceneTypeEmitsTheCrossedCells), the same code on fewer cells. The other
 // tests that sample under the sanitizers say so where they do (grep kSanitizedBuild): each
