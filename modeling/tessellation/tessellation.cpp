@@ -389,13 +389,17 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
   rep.stitched_pieces = stitched.zipped;
   rep.unstitched_planes = stitched.refused_planes;
   rep.unstitched_pieces = stitched.refused_pieces;
-  // A rebuilt piece's errors are measured again, on the triangles it is drawn with.
+  // Stitching moved triangles between surface and caps: every piece's counts from here on
+  // are the stitched ones, and a rebuilt piece's errors are measured again, on the triangles
+  // it is drawn with.
 #pragma omp parallel for schedule(dynamic, 16)
   for (long li = 0; li < long(n); ++li) {
     const std::size_t i = std::size_t(li);
-    if (i >= stitched.rebuilt.size() || !stitched.rebuilt[i]) continue;
-    pieces[i].surface_triangles = surface[i];
-    measureErrors(pieces[i], scene.primitives[i], options.pixel_error > 0 ? &view : nullptr, options.chord_samples);
+    PrimitiveTessellation& t = pieces[i];
+    t.surface_triangles = surface[i];
+    t.cap_triangles = t.mesh.size() - surface[i];
+    if (i < stitched.rebuilt.size() && stitched.rebuilt[i])
+      measureErrors(t, scene.primitives[i], options.pixel_error > 0 ? &view : nullptr, options.chord_samples);
   }
 
   // The report in scene order (its means are sums in that order), the exact surfaces' meshes
@@ -467,8 +471,6 @@ TriangleMesh3 tessellateScene(const Scene& scene, const TessellationOptions& opt
     }
     PrimitiveTessellation& t = pieces[i];
     const std::size_t count = t.mesh.size();
-    t.cap_triangles = count - surface[i];
-    t.surface_triangles = surface[i];
     ++rep.primitives;
     rep.triangles += count;
     rep.cap_triangles += t.cap_triangles;
