@@ -91,33 +91,37 @@ inline std::int64_t isqrt63(std::int64_t x) {
   return q;
 }
 
-inline bool fits63(i128 v) { return v > -(i128(1) << 62) && v < (i128(1) << 62); }
+// |v| as an unsigned 128-bit value (v > -2^127 in every datapath here).
+inline unsigned __int128 magnitude(i128 v) { return v < 0 ? (unsigned __int128)(-v) : (unsigned __int128)v; }
 
 template <typename T, Rounding R>
 void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
   const int nb = cfg.normal_bits, uf = cfg.unit_frac_bits, G = 8;
   T n[3];
-  if (std::is_same_v<T, std::int64_t> && fits63(in[0]) && fits63(in[1]) && fits63(in[2])) {
-    // The same normaliser on 64-bit registers.
-    const std::int64_t a[3] = {std::int64_t(in[0]), std::int64_t(in[1]), std::int64_t(in[2])};
-    const std::uint64_t m = std::uint64_t(a[0] < 0 ? -a[0] : a[0]) | std::uint64_t(a[1] < 0 ? -a[1] : a[1]) |
-                            std::uint64_t(a[2] < 0 ? -a[2] : a[2]);
-    if (m == 0) {
-      out[0] = out[1] = out[2] = 0;
-      return;
+  // The leading-zero normaliser: the longest component's bit length, from the OR of the
+  // magnitudes (the same length as the longest of the three).
+  const unsigned __int128 m = magnitude(in[0]) | magnitude(in[1]) | magnitude(in[2]);
+  if (m == 0) {
+    out[0] = out[1] = out[2] = 0;
+    return;
+  }
+  const std::uint64_t mhi = std::uint64_t(m >> 64);
+  const int len = mhi ? 128 - __builtin_clzll(mhi) : 64 - __builtin_clzll(std::uint64_t(m));
+  const int shift = len - (nb - 1);
+  if (shift <= 0) {
+    for (int k = 0; k < 3; ++k) n[k] = T(in[k]) * (T(1) << -shift);
+  } else if (len <= 62) {
+    // Every component fits a 64-bit register: the same rounding shift there.
+    for (int k = 0; k < 3; ++k) n[k] = T(shiftRoundR<R, std::int64_t>(std::int64_t(in[k]), shift));
+  } else if constexpr (R != Rounding::NearestEven) {
+    // Wider: the top bits come down to 64 bits first. floor((v + 2^(s-1)) / 2^s) =
+    // floor((floor(v / 2^(s-1)) + 1) / 2), so rounding to nearest needs only v >> (s-1).
+    for (int k = 0; k < 3; ++k) {
+      const std::int64_t t = std::int64_t(in[k] >> (shift - 1));
+      n[k] = T(R == Rounding::Truncate ? t >> 1 : (t + 1) >> 1);
     }
-    const int shift = (64 - __builtin_clzll(m)) - (nb - 1);  // leading-zero normaliser
-    for (int k = 0; k < 3; ++k)
-      n[k] = T(shift > 0 ? shiftRoundR<R, std::int64_t>(a[k], shift) : a[k] * (std::int64_t(1) << -shift));
   } else {
-    int len = 0;
-    for (int k = 0; k < 3; ++k) len = std::max(len, bitLength(in[k]));
-    if (len == 0) {
-      out[0] = out[1] = out[2] = 0;
-      return;
-    }
-    const int shift = len - (nb - 1);  // leading-zero normaliser
-    for (int k = 0; k < 3; ++k) n[k] = T(shift > 0 ? shiftRoundR<R, i128>(in[k], shift) : shl(in[k], -shift));
+    for (int k = 0; k < 3; ++k) n[k] = T(shiftRoundR<R, i128>(in[k], shift));
   }
   const T len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   if (cfg.shading_normalizer == Normalizer::Newton) {
@@ -139,8 +143,17 @@ void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
   for (int k = 0; k < 3; ++k) out[k] = shiftRoundR<R, T>(n[k] * rs, nb - 1);
 }
 
+// A component of an affine field at (u, v, z). Narrow: the coefficients fit 64 bits
+// (value_bits + interp_frac_bits + 2 <= 64), so each product is one 64 x 64 -> 128-bit
+// multiply on the host; the same value as the 128-bit products.
+inline i128 mul64(i128 a, i128 b) { return i128(std::int64_t(a)) * i128(std::int64_t(b)); }
+template <bool Narrow>
 inline i128 evalField(const VectorSetup& f, int k, int u, int v, i128 z, int Fz) {
   const LinearCoefficients& c = f.uv[k];
+  if constexpr (Narrow) {
+    const i128 uv = mul64(c.A, u) + mul64(c.B, v) + c.C;
+    return i128((unsigned __int128)uv << Fz) + mul64(f.cz[k], z);
+  }
   return shl(c.A * u + c.B * v + c.C, Fz) + f.cz[k] * z;
 }
 
@@ -149,7 +162,7 @@ inline T dot(const T a[3], const T b[3], int uf) {
   return shiftRoundR<R, T>(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf);
 }
 
-template <typename T, Rounding R>
+template <typename T, Rounding R, bool Narrow>
 std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
                                    int v, i128 z, int cap) {
   const int Fz = cfg.depth_frac_bits, uf = cfg.unit_frac_bits, cf = cfg.color_frac_bits;
@@ -158,10 +171,10 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
   if (cap >= 0) {
     for (int k = 0; k < 3; ++k) raw[k] = s.planes[std::size_t(cap)].capNormal[k];
   } else {
-    for (int k = 0; k < 3; ++k) raw[k] = evalField(s.normal, k, u, v, z, Fz);
+    for (int k = 0; k < 3; ++k) raw[k] = evalField<Narrow>(s.normal, k, u, v, z, Fz);
   }
   normalizeT<T, R>(raw, cfg, N);
-  for (int k = 0; k < 3; ++k) raw[k] = evalField(s.view, k, u, v, z, Fz);
+  for (int k = 0; k < 3; ++k) raw[k] = evalField<Narrow>(s.view, k, u, v, z, Fz);
   normalizeT<T, R>(raw, cfg, V);
   if (dot<R>(N, V, uf) < 0)
     for (int k = 0; k < 3; ++k) N[k] = -N[k];  // two-sided
@@ -178,7 +191,7 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
     if (l.type == Light::Type::Directional) {
       for (int k = 0; k < 3; ++k) Lv[k] = T(l.dir[k]);
     } else {
-      for (int k = 0; k < 3; ++k) raw[k] = evalField(s.pointLights[std::size_t(l.point)], k, u, v, z, Fz);
+      for (int k = 0; k < 3; ++k) raw[k] = evalField<Narrow>(s.pointLights[std::size_t(l.point)], k, u, v, z, Fz);
       normalizeT<T, R>(raw, cfg, Lv);
     }
     const T ndl = std::min(dot<R>(N, Lv, uf), one);
@@ -199,15 +212,15 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
 }
 
 // shadeT instantiated for the configured rounding mode.
-template <typename T>
+template <typename T, bool Narrow>
 std::array<std::uint8_t, 3> shadeRounded(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
                                          int v, i128 z, int cap) {
   switch (cfg.rounding) {
-    case Rounding::Truncate: return shadeT<T, Rounding::Truncate>(s, L, cfg, u, v, z, cap);
-    case Rounding::Nearest: return shadeT<T, Rounding::Nearest>(s, L, cfg, u, v, z, cap);
+    case Rounding::Truncate: return shadeT<T, Rounding::Truncate, Narrow>(s, L, cfg, u, v, z, cap);
+    case Rounding::Nearest: return shadeT<T, Rounding::Nearest, Narrow>(s, L, cfg, u, v, z, cap);
     case Rounding::NearestEven: break;
   }
-  return shadeT<T, Rounding::NearestEven>(s, L, cfg, u, v, z, cap);
+  return shadeT<T, Rounding::NearestEven, Narrow>(s, L, cfg, u, v, z, cap);
 }
 
 }  // namespace
@@ -215,13 +228,16 @@ std::array<std::uint8_t, 3> shadeRounded(const PrimitiveSetup& s, const Lighting
 std::array<std::uint8_t, 3> shadePixel(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
                                        i128 z, int cap, OverflowCounter& ovf) {
   (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
-  if (cfg.normal_bits <= 23) return shadeRounded<std::int64_t>(s, L, cfg, u, v, z, cap);
-  return shadeRounded<i128>(s, L, cfg, u, v, z, cap);
+  if (cfg.normal_bits <= 23) {
+    if (cfg.value_bits + cfg.interp_frac_bits + 2 <= 64) return shadeRounded<std::int64_t, true>(s, L, cfg, u, v, z, cap);
+    return shadeRounded<std::int64_t, false>(s, L, cfg, u, v, z, cap);
+  }
+  return shadeRounded<i128, false>(s, L, cfg, u, v, z, cap);
 }
 
 std::array<std::uint8_t, 3> shadePixelWide(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
                                            int v, i128 z, int cap) {
-  return shadeRounded<i128>(s, L, cfg, u, v, z, cap);
+  return shadeRounded<i128, false>(s, L, cfg, u, v, z, cap);
 }
 
 }  // namespace qacc

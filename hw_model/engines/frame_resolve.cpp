@@ -14,7 +14,7 @@ void resolvePixel(const HwConfig& cfg, const FrameSetup& fs, int x, int y, const
   const PrimitiveSetup& s = fs.setups[std::size_t(e.prim)];
   const auto rgb = shadePixel(s, fs.lighting, cfg, x - s.x0, y - s.y0, e.depth, e.cap, ovf);
   for (int c = 0; c < 3; ++c) fb.color.data[pix * 3 + c] = rgb[std::size_t(c)];
-  fb.depth[pix] = (double(e.z) + 0.5) * std::ldexp(1.0, -cfg.zbuffer_bits);
+  fb.depth[pix] = (double(e.z) + 0.5) * fs.storedDepthStep;
   fb.object[pix] = s.object;
   fb.primitive[pix] = e.prim;
 }

@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include <cmath>
+
 #include "hw_model/datapath/setup_arithmetic.h"
 
 namespace qacc {
@@ -22,6 +24,7 @@ FrameSetup FrameSetup::build(const Scene& scene, const HwConfig& cfg, int thread
     fs.overflow.setup.coarse += o.coarse;
   }
   fs.lighting = LightingSetup::build(scene, cfg, fs.overflow.shading);
+  fs.storedDepthStep = std::ldexp(1.0, -cfg.zbuffer_bits);
   return fs;
 }
 

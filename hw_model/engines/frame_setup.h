@@ -16,6 +16,7 @@ struct FrameSetup {
   std::vector<PrimitiveSetup> setups;
   LightingSetup lighting;
   OverflowCounters overflow;  // setup overflows
+  double storedDepthStep = 0;  // window depth of one step of the stored Z (2^-zbuffer_bits)
   static FrameSetup build(const Scene& scene, const HwConfig& cfg, int threads);
 };
 

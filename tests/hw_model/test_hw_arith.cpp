@@ -205,14 +205,33 @@ TEST(HwConfig, ShippedConfigurationsLoad) {
   EXPECT_EQ(hwConfigToJson(d), hwConfigToJson(HwConfig()));
 }
 
-// The shading unit computes with 64-bit registers where the widths allow; the 128-bit
-// datapath must give the same colour for every input (surface points at any depth, caps).
+// The shading unit computes with 64-bit registers where the widths allow (and its fields
+// with 64 x 64-bit products where the coefficients fit 64 bits); the 128-bit datapath must
+// give the same colour for every input (surface points at any depth, caps), in every
+// rounding mode, with either normaliser, under directional, ambient and point lights.
 TEST(ShadingUnit, SixtyFourBitRegistersGiveTheSameBitsAsOneHundredTwentyEight) {
-  for (const char* n : {"default", "minimal", "wide"}) {
-    const HwConfig cfg = loadHwConfig(std::string(QACC_SOURCE_DIR) + "/hw_model/configs/" + n + ".json");
+  struct Variant {
+    const char* config;
+    Rounding rounding;
+    Normalizer normalizer;
+  };
+  std::vector<Variant> variants;
+  for (const char* n : {"default", "minimal", "wide"})
+    for (Rounding r : {Rounding::Truncate, Rounding::Nearest, Rounding::NearestEven})
+      for (Normalizer z : {Normalizer::Newton, Normalizer::Recurrence}) variants.push_back({n, r, z});
+  for (const Variant& var : variants) {
+    const char* n = var.config;
+    HwConfig cfg = loadHwConfig(std::string(QACC_SOURCE_DIR) + "/hw_model/configs/" + n + ".json");
+    cfg.rounding = var.rounding;
+    cfg.shading_normalizer = var.normalizer;
     Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json");
     scene.width = 320;
     scene.height = 240;
+    Light point;
+    point.type = Light::Type::Point;
+    point.position = scene.camera.eye + Eigen::Vector3d(1.5, 2.0, -0.5);
+    point.color = Eigen::Vector3d(0.6, 0.5, 0.4);
+    scene.lights.push_back(point);
     const FrameSetup hs = FrameSetup::build(scene, cfg, 1);
     std::mt19937_64 rng(7);
     int compared = 0;
@@ -227,7 +246,8 @@ TEST(ShadingUnit, SixtyFourBitRegistersGiveTheSameBitsAsOneHundredTwentyEight) {
         OverflowCounter ovf;
         const auto narrow = shadePixel(s, hs.lighting, cfg, u, v, z, cap, ovf);
         const auto wide = shadePixelWide(s, hs.lighting, cfg, u, v, z, cap);
-        ASSERT_EQ(narrow, wide) << n << " primitive " << s.index << " at " << u << "," << v;
+        ASSERT_EQ(narrow, wide) << n << " rounding " << toString(var.rounding) << " normaliser "
+                                << int(var.normalizer) << " primitive " << s.index << " at " << u << "," << v;
         ++compared;
       }
     }
