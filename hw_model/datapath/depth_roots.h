@@ -20,7 +20,9 @@ namespace qacc {
 
 struct DepthRoots {
   int count = 0;
-  i128 z[2] = {0, 0};  // ascending
+  // Ascending, in the depth format: depth_bits <= 40 (HwConfig), so a 64-bit register holds
+  // every value (and the host keeps the pair in registers).
+  std::int64_t z[2] = {0, 0};
 };
 
 // The roots of the primitive on the line of a pixel (ascending), in the depth format.
@@ -64,11 +66,11 @@ inline DepthRoots depthRootsT(const PrimitiveSetup& s, const HwConfig& cfg, i128
     }
     if (s.a == 0) {
       r.count = 1;
-      r.z[0] = windowDepth(divRound(shl(c, Fz), q, R));
+      r.z[0] = std::int64_t(windowDepth(divRound(shl(c, Fz), q, R)));
       return r;
     }
-    i128 z1 = windowDepth(divRound(shl(q, Fz), s.a, R));
-    i128 z2 = windowDepth(divRound(shl(c, Fz), q, R));
+    std::int64_t z1 = std::int64_t(windowDepth(divRound(shl(q, Fz), s.a, R)));
+    std::int64_t z2 = std::int64_t(windowDepth(divRound(shl(c, Fz), q, R)));
     if (z2 < z1) std::swap(z1, z2);
     r.count = 2;
     r.z[0] = z1;
@@ -77,8 +79,8 @@ inline DepthRoots depthRootsT(const PrimitiveSetup& s, const HwConfig& cfg, i128
   } else {
     if (!s.recipValid) return r;
     const int sh = s.recipShift - Fz;
-    i128 z1 = windowDepth(shiftRoundR<R>((-b - sq) * s.recipM, sh));
-    i128 z2 = windowDepth(shiftRoundR<R>((-b + sq) * s.recipM, sh));
+    std::int64_t z1 = std::int64_t(windowDepth(shiftRoundR<R>((-b - sq) * s.recipM, sh)));
+    std::int64_t z2 = std::int64_t(windowDepth(shiftRoundR<R>((-b + sq) * s.recipM, sh)));
     if (z2 < z1) std::swap(z1, z2);
     r.count = 2;
     r.z[0] = z1;

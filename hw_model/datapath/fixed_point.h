@@ -114,8 +114,25 @@ inline i128 divRound(i128 num, i128 den, Rounding r) {
     }
     const bool ng = n < 0;
     const long long a = ng ? -n : n;
-    long long q = a / d;
-    const long long rem = a - q * d;
+    long long q, rem;
+    // A quotient below 2^50 comes from the host's floating-point divider, corrected by its
+    // remainder (faster than a 64-bit integer divide): the double quotient carries at most
+    // 4 roundings of 2^-53, an error below 1/2 there, so its floor is off by at most one.
+    const double qf = double(a) / double(d);
+    if (qf < 0x1p50) {
+      q = (long long)qf;
+      rem = a - q * d;
+      if (rem < 0) {
+        --q;
+        rem += d;
+      } else if (rem >= d) {
+        ++q;
+        rem -= d;
+      }
+    } else {
+      q = a / d;
+      rem = a - q * d;
+    }
     if (r != Rounding::Truncate) {
       const long long twice = 2 * rem;
       if (twice > d || (twice == d && (r == Rounding::Nearest || (q & 1)))) ++q;

@@ -43,7 +43,8 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg, Over
       continue;
     }
     // Materials with the same specular weight and shininess have the same ROM: built once
-    // (the copy counts the same quantisation events as building it again).
+    // and shared on the host (each material still counts the quantisation events of its
+    // ROM, as building it again would).
     bool shared = false;
     for (std::size_t j = 0; j < mi && !shared; ++j)
       if (used[j] && mats[j].specular == m.specular && mats[j].shininess == m.shininess) {
@@ -59,13 +60,14 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg, Over
       continue;
     }
     const int n = (1 << uf) + 1;
-    q.specular.resize(std::size_t(n));
+    auto table = std::make_shared<std::vector<std::int32_t>>(std::size_t(n));
     // Entries saturate at the ROM's 32-bit width, counted as shading overflows (a specular
     // weight above about 5e5 wrapped to negative values before: a 13 dB image, said nowhere).
     OverflowCounter& rom = romEvents[mi];
     for (int i = 0; i < n; ++i)
-      q.specular[std::size_t(i)] = std::int32_t(
+      (*table)[std::size_t(i)] = std::int32_t(
           quantize(m.specular * std::pow(std::ldexp(double(i), -uf), m.shininess), cf, 32, OverflowMode::Saturate, rom));
+    q.specular = std::move(table);
     ovf.events += rom.events;
     ovf.zeroed += rom.zeroed;
     ovf.coarse += rom.coarse;
@@ -94,8 +96,10 @@ inline std::int64_t isqrt63(std::int64_t x) {
 // |v| as an unsigned 128-bit value (v > -2^127 in every datapath here).
 inline unsigned __int128 magnitude(i128 v) { return v < 0 ? (unsigned __int128)(-v) : (unsigned __int128)v; }
 
+// Inlined into the shading datapath (four calls a pixel): its inputs then stay in registers
+// instead of being stored as 64-bit halves and reloaded as 128-bit values.
 template <typename T, Rounding R>
-void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
+[[gnu::always_inline]] inline void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
   const int nb = cfg.normal_bits, uf = cfg.unit_frac_bits, G = 8;
   T n[3];
   // The leading-zero normaliser: the longest component's bit length, from the OR of the
@@ -201,7 +205,7 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
     for (int k = 0; k < 3; ++k) hs[k] = i128(Lv[k]) + i128(V[k]);
     normalizeT<T, R>(hs, cfg, H);
     const T ndh = std::clamp<T>(dot<R>(N, H, uf), 0, one);
-    const T spec = m.specular[std::size_t(ndh)];
+    const T spec = (*m.specular)[std::size_t(ndh)];
     for (int k = 0; k < 3; ++k)
       out[k] += shiftRoundR<R, T>(T(l.color[k]) * (shiftRoundR<R, T>(T(m.color[k]) * ndl, uf) + spec), cf);
   }

@@ -12,6 +12,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "hw_model/config/hw_config.h"
@@ -30,9 +31,10 @@ struct LightingSetup {
   };
   struct MaterialQ {
     i128 color[3] = {0, 0, 0};
-    // ROM: specular · (i / 2^unit_frac)^shininess, 0.color_frac; empty for a material no
-    // primitive uses (never read).
-    std::vector<std::int32_t> specular;
+    // ROM: specular · (i / 2^unit_frac)^shininess, 0.color_frac; null for a material no
+    // primitive uses (never read). Materials with the same specular weight and shininess
+    // share one table on the host (one copy in the host's caches).
+    std::shared_ptr<const std::vector<std::int32_t>> specular;
   };
   std::vector<LightQ> lights;
   std::vector<MaterialQ> materials;

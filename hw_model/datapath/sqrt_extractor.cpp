@@ -42,16 +42,7 @@ std::uint64_t SqrtExtractor::recurrence(unsigned __int128 n, int inputBits, int 
   return std::uint64_t(q);
 }
 
-std::uint64_t SqrtExtractor::compute(unsigned __int128 n) {
-  if (n == 0) return 0;
-  if (n < ((unsigned __int128)1 << 64)) {  // common case: 64-bit operand
-    const std::uint64_t m = std::uint64_t(n);
-    std::uint64_t x = std::uint64_t(std::sqrt(double(m)));
-    if (x > 0xFFFFFFFFull) x = 0xFFFFFFFFull;
-    while ((unsigned __int128)x * x > m) --x;
-    while ((unsigned __int128)(x + 1) * (x + 1) <= m) ++x;
-    return x;
-  }
+std::uint64_t SqrtExtractor::computeWide(unsigned __int128 n) {
   // Operands are below 2^124 (delta_bits <= 80 in any configuration), so x² cannot wrap.
   unsigned __int128 x = (unsigned __int128)std::sqrt((long double)n);
   while (x * x > n) --x;

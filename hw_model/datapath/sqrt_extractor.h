@@ -7,6 +7,7 @@
 // models the hardware algorithm digit by digit; `compute` returns the same bits faster
 // (double-precision estimate + exact integer correction). Tests check they agree.
 #pragma once
+#include <cmath>
 #include <cstdint>
 
 #include "hw_model/datapath/fixed_point.h"
@@ -17,8 +18,21 @@ class SqrtExtractor {
  public:
   // Digit recurrence with radix 2 or 4 over an operand of `inputBits` bits (even-rounded up).
   static std::uint64_t recurrence(unsigned __int128 n, int inputBits, int radix);
-  // Same result, fast path.
-  static std::uint64_t compute(unsigned __int128 n);
+  // Same result, fast path: the host's double square root, corrected to the exact floor
+  // (inline for a 64-bit operand, the common case: every covered pixel takes one).
+  static std::uint64_t compute(unsigned __int128 n) {
+    if (n >> 64) return computeWide(n);
+    const std::uint64_t m = std::uint64_t(n);
+    if (m == 0) return 0;
+    std::uint64_t x = std::uint64_t(std::sqrt(double(m)));
+    if (x > 0xFFFFFFFFull) x = 0xFFFFFFFFull;
+    while ((unsigned __int128)x * x > m) --x;
+    while ((unsigned __int128)(x + 1) * (x + 1) <= m) ++x;
+    return x;
+  }
+
+ private:
+  static std::uint64_t computeWide(unsigned __int128 n);  // n >= 2^64
 };
 
 }  // namespace qacc

@@ -122,6 +122,47 @@ TEST(FixedPoint, RoundingModes) {
   EXPECT_EQ(divRound(i128(1) << 100, i128(3), Rounding::Truncate), (i128(1) << 100) / 3);
 }
 
+// divRound's 64-bit path takes its quotient from the floating-point divider below 2^50 and
+// corrects it by the remainder: the same quotient as integer division in every rounding mode,
+// on random operands of every length, ties, exact multiples and quotients near 2^50.
+TEST(FixedPoint, DivRoundMatchesIntegerDivision) {
+  const auto expected = [](i128 num, i128 den, Rounding r) {
+    if (den < 0) {
+      num = -num;
+      den = -den;
+    }
+    const bool neg = num < 0;
+    const i128 n = neg ? -num : num;
+    i128 q = n / den;
+    const i128 rem = n % den;
+    if (r != Rounding::Truncate && (2 * rem > den || (2 * rem == den && (r == Rounding::Nearest || (q & 1))))) ++q;
+    return neg ? -q : q;
+  };
+  std::mt19937_64 rng(5);
+  const auto operand = [&](int bits) {
+    const long long v = bits >= 63 ? (long long)(rng() >> 2) : (long long)(rng() >> (64 - bits));
+    return i128(rng() & 1 ? -v : v);
+  };
+  int checked = 0;
+  for (int i = 0; i < 400000; ++i) {
+    const i128 den = operand(1 + int(rng() % 62));
+    if (den == 0) continue;
+    i128 num;
+    switch (i % 4) {
+      case 0: num = operand(1 + int(rng() % 62)); break;
+      case 1: num = den * operand(1 + int(rng() % 20)); break;                          // exact multiples
+      case 2: num = den * operand(1 + int(rng() % 20)) + den / 2; break;              // ties and near ties
+      default: num = den * ((i128(1) << 50) + operand(8)) + operand(6); break;        // quotients near 2^50
+    }
+    if (num <= -(i128(1) << 62) || num >= (i128(1) << 62)) continue;
+    for (Rounding r : {Rounding::Truncate, Rounding::Nearest, Rounding::NearestEven})
+      ASSERT_EQ(divRound(num, den, r), expected(num, den, r))
+          << (long long)num << " / " << (long long)den << " rounding " << toString(r);
+    ++checked;
+  }
+  EXPECT_GT(checked, 200000);
+}
+
 // The rounding shift with the mode fixed at compile time (the datapaths' inner loops) against
 // the general definition: random values of every width and sign, ties (rem = half, on odd
 // and even floors), values next to the register's ends (where v + half overflows), shifts

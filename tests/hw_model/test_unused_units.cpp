@@ -51,7 +51,8 @@ TEST(UnusedUnits, AMaterialNoPrimitiveUsesGetsNoSpecularTable) {
   }
   ASSERT_GE(used, 0);
   ASSERT_GE(unused, 0);
-  EXPECT_EQ(L.materials[std::size_t(used)].specular.size(), (std::size_t(1) << cfg.unit_frac_bits) + 1);
-  EXPECT_TRUE(L.materials[std::size_t(unused)].specular.empty());
+  ASSERT_TRUE(L.materials[std::size_t(used)].specular);
+  EXPECT_EQ(L.materials[std::size_t(used)].specular->size(), (std::size_t(1) << cfg.unit_frac_bits) + 1);
+  EXPECT_FALSE(L.materials[std::size_t(unused)].specular);
   EXPECT_NE(L.materials[std::size_t(unused)].color[1], 0);  // its colour is still quantised
 }
