@@ -48,10 +48,25 @@ def plot(d):
         ax.plot([], [], " ", label="no ratio (not reached or no cycles): " + ", ".join(missing))
     ax.set_xscale("log")
     ax.set_yscale("log")
+    if not xs:
+        # No size has a ratio (the facets never reach the accelerator's silhouette error):
+        # the axes still span the measured primitive sizes, and the plot says so.
+        sizes = [num(s["px_per_primitive"]) for s in c["sizes"] if num(s["px_per_primitive"]) > 0]
+        if sizes:
+            ax.set_xlim(min(sizes) / 1.5, max(sizes) * 1.5)
+        ax.set_ylim(0.1, 100)
+        ax.text(0.5, 0.5, "no measured size reaches the accelerator's silhouette error\n(no ratio to plot)",
+                transform=ax.transAxes, ha="center", va="center", fontsize=9, color="C3")
+    for s in c["sizes"]:
+        x, y = num(s["px_per_primitive"]), num(s["cycle_ratio"])
+        if not (math.isfinite(y) and y > 0) and x > 0:
+            ax.axvline(x, color="gray", linestyle=":", linewidth=0.8)
+            ax.text(x, 0.02, " %dx%d: %s" % (s["width"], s["height"], s["status"].replace("_", " ")),
+                    transform=ax.get_xaxis_transform(), rotation=90, fontsize=6, color="gray", va="bottom")
     ax.set_xlabel("mean projected primitive size (pixels covered per quadric primitive)")
     ax.set_ylabel("facet-path cycles / quadric-path cycles")
     ax.grid(True, which="both", alpha=0.25)
-    ax.legend(fontsize=7, loc="best")
+    ax.legend(fontsize=7, loc="best" if xs else "upper right")
     ax.set_title("%s: quadrics vs triangles on the accelerator by screen size\n(%s config, qacc %s)" %
                  (c["scene"], c["hw_config"], c["qacc_version"]), fontsize=10)
     fig.tight_layout()
