@@ -16,6 +16,9 @@ import sys
 
 from plot_common import num  # noqa: E402  (also selects matplotlib's Agg backend)
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import FuncFormatter  # noqa: E402
+
+PLAIN = FuncFormatter(lambda v, _: "%g" % v)  # 2, 0.5, 1000 rather than 2x10^0
 
 
 def plot(d):
@@ -63,6 +66,12 @@ def plot(d):
             ax.axvline(x, color="gray", linestyle=":", linewidth=0.8)
             ax.text(x, 0.02, " %dx%d: %s" % (s["width"], s["height"], s["status"].replace("_", " ")),
                     transform=ax.get_xaxis_transform(), rotation=90, fontsize=6, color="gray", va="bottom")
+    # Plain numbers on both axes; the minor ticks labelled only on an axis that spans less
+    # than a decade (else its major ticks say enough).
+    for axis, lim in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+        axis.set_major_formatter(PLAIN)
+        narrow = lim[0] > 0 and lim[1] / lim[0] < 10
+        axis.set_minor_formatter(PLAIN if narrow else FuncFormatter(lambda v, _: ""))
     ax.set_xlabel("mean projected primitive size (pixels covered per quadric primitive)")
     ax.set_ylabel("facet-path cycles / quadric-path cycles")
     ax.grid(True, which="both", alpha=0.25)
