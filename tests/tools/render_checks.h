@@ -4,17 +4,20 @@
 #include <cstddef>
 #include <functional>
 #include <queue>
+#include <algorithm>
 #include <vector>
 
 #include <Eigen/Dense>
 
 #include "modeling/scene/scene.h"
+#include "modeling/scene/screen_view.h"
 #include "raster/image/frame_buffer.h"
 
 namespace qacc {
 
-// Background pixels not connected to the image border (holes inside the projected surface).
-inline int enclosedBackgroundPixels(const FrameBuffer& fb) {
+// Background pixels not connected to the image border (holes inside the projected surface);
+// with `truth`, only those the truth covers (a torus's own hole is not counted).
+inline int enclosedBackgroundPixels(const FrameBuffer& fb, const FrameBuffer* truth = nullptr) {
   std::vector<char> seen(fb.pixels(), 0);
   std::queue<int> q;
   auto push = [&](int x, int y) {
@@ -34,7 +37,7 @@ inline int enclosedBackgroundPixels(const FrameBuffer& fb) {
   }
   int holes = 0;
   for (std::size_t i = 0; i < fb.pixels(); ++i)
-    if (fb.object[i] < 0 && !seen[i]) ++holes;
+    if (fb.object[i] < 0 && !seen[i] && (!truth || truth->object[i] >= 0)) ++holes;
   return holes;
 }
 
@@ -85,6 +88,75 @@ inline int insideViews(const Scene& s, const FrameBuffer& fb,
       const Eigen::Vector3d g = s.primitives[std::size_t(fb.primitive[i])].quadric.gradient(p);
       const Eigen::Vector3d v = s.camera.toViewer(p);
       if (g.dot(v) < -0.05 * g.norm() * v.norm() && !(expected && expected(p))) ++n;
+    }
+  return n;
+}
+
+// Where a tessellation may show the background or back faces without any crack: pixels
+// within `margin` px (Chebyshev) of the truth's outline or of one of its occluding contours —
+// a covered pixel of the truth (the reference's frame buffer of the same view) next to the
+// background or to a pixel more than `jumpPx` pixels' worth of distance farther away. There
+// the chords of a surface's far side reach past those of its near side, and a chord leaves
+// a pixel centre the true surface covers by a sliver.
+inline std::vector<char> nearTruthContours(const Scene& s, const FrameBuffer& truth, int margin, double jumpPx) {
+  const Eigen::Matrix4d Minv = s.camera.worldToWindow(truth.width, truth.height).inverse();
+  const ScreenView view(s.camera, truth.width, truth.height);
+  const Eigen::Vector3d forward = s.camera.forward();
+  const int W = truth.width, H = truth.height;
+  std::vector<double> dist(truth.pixels(), 0.0), scale(truth.pixels(), 0.0);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(W) + std::size_t(x);
+      if (truth.object[i] < 0) continue;
+      const Eigen::Vector4d X = Minv * Eigen::Vector4d(x + 0.5, y + 0.5, truth.depth[i], 1.0);
+      const Eigen::Vector3d p = X.head<3>() / X.w();
+      dist[i] = (p - s.camera.eye).dot(forward);
+      scale[i] = view.pixelsPerUnit(p);
+    }
+  std::vector<char> contour(truth.pixels(), 0);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(W) + std::size_t(x);
+      if (truth.object[i] < 0) continue;
+      const int nx[4] = {x + 1, x - 1, x, x}, ny[4] = {y, y, y + 1, y - 1};
+      for (int k = 0; k < 4 && !contour[i]; ++k) {
+        if (nx[k] < 0 || ny[k] < 0 || nx[k] >= W || ny[k] >= H) continue;
+        const std::size_t j = std::size_t(ny[k]) * std::size_t(W) + std::size_t(nx[k]);
+        contour[i] = truth.object[j] < 0 || (dist[j] - dist[i]) * scale[i] > jumpPx;
+      }
+    }
+  std::vector<char> near(truth.pixels(), 0);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      if (!contour[std::size_t(y) * std::size_t(W) + std::size_t(x)]) continue;
+      for (int yy = std::max(0, y - margin); yy <= std::min(H - 1, y + margin); ++yy)
+        for (int xx = std::max(0, x - margin); xx <= std::min(W - 1, x + margin); ++xx)
+          near[std::size_t(yy) * std::size_t(W) + std::size_t(xx)] = 1;
+    }
+  return near;
+}
+
+// Cracks in a surface's triangles, against the truth: pixels away from the truth's contours
+// (nearTruthContours) where the triangles show the background while the truth shows the
+// surface, or, on a closed surface, show its inside (a back face, as insideViews).
+inline int cracksAwayFromContours(const Scene& s, const FrameBuffer& truth, const FrameBuffer& fb,
+                                  const std::vector<char>& nearContours, bool closed) {
+  const Eigen::Matrix4d Minv = s.camera.worldToWindow(fb.width, fb.height).inverse();
+  int n = 0;
+  for (int y = 0; y < fb.height; ++y)
+    for (int x = 0; x < fb.width; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
+      if (nearContours[i] || truth.object[i] < 0) continue;
+      if (fb.object[i] < 0) {
+        ++n;
+        continue;
+      }
+      if (!closed || fb.primitive[i] < 0) continue;
+      const Eigen::Vector4d X = Minv * Eigen::Vector4d(x + 0.5, y + 0.5, fb.depth[i], 1.0);
+      const Eigen::Vector3d p = X.head<3>() / X.w();
+      const Eigen::Vector3d g = s.primitives[std::size_t(fb.primitive[i])].quadric.gradient(p);
+      const Eigen::Vector3d v = s.camera.toViewer(p);
+      if (g.dot(v) < -0.05 * g.norm() * v.norm()) ++n;
     }
   return n;
 }
