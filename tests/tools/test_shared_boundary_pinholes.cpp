@@ -74,6 +74,7 @@ TEST_P(SharedBoundaryPinholes, FacetsOfPiecesHaveNoCracks) {
 // The checks can fail: a surface with a piece left out shows the background and the inside.
 TEST(SharedBoundaryPinholesCheck, APieceLeftOutIsACrack) {
   if (!facetRendererAvailable()) GTEST_SKIP() << facetRendererMissingMessage();
+  if (kSanitizedBuild) GTEST_SKIP() << "left to the Release suite (CI's budget; macropatch_g0's case runs the same checks)";
   Scene s = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/macropatch_g0.json");
   const FrameBuffer truth = renderReference(s, 0);
   TessellationOptions to;
