@@ -1,10 +1,10 @@
 // Image checks shared by the render tests of surfaces made of pieces: holes along shared
 // faces show background inside the outline, or the inside of a closed surface.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <queue>
-#include <algorithm>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -71,10 +71,24 @@ inline int missedInside(const FrameBuffer& truth, const FrameBuffer& test, int m
   return n;
 }
 
-// Pixels whose visible point is on the inside of a closed surface (f <= 0 inside: the
-// outward gradient faces away from the viewer): through a crack or pinhole one sees the back
-// of the surface from inside. Grazing points (|cos| < 0.05) are not counted, nor the points
-// `expected` accepts (seen through an opening the surface has on purpose).
+// The world point a frame buffer shows at pixel (x, y) with window depth `depth` (Minv: the
+// inverse of the camera's world -> window matrix for the buffer's size).
+inline Eigen::Vector3d pixelPoint(const Eigen::Matrix4d& Minv, int x, int y, double depth) {
+  const Eigen::Vector4d X = Minv * Eigen::Vector4d(x + 0.5, y + 0.5, depth, 1.0);
+  return X.head<3>() / X.w();
+}
+
+// Whether p, on primitive `prim`, is seen from inside its closed surface (f <= 0 inside: the
+// outward gradient faces away from the viewer), grazing points (|cos| < 0.05) excepted.
+inline bool seenFromInside(const Scene& s, int prim, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d g = s.primitives[std::size_t(prim)].quadric.gradient(p);
+  const Eigen::Vector3d v = s.camera.toViewer(p);
+  return g.dot(v) < -0.05 * g.norm() * v.norm();
+}
+
+// Pixels whose visible point is on the inside of a closed surface (seenFromInside): through a
+// crack or pinhole one sees the back of the surface from inside. The points `expected`
+// accepts (seen through an opening the surface has on purpose) are not counted.
 inline int insideViews(const Scene& s, const FrameBuffer& fb,
                        const std::function<bool(const Eigen::Vector3d&)>& expected = {}) {
   const Eigen::Matrix4d Minv = s.camera.worldToWindow(fb.width, fb.height).inverse();
@@ -83,11 +97,8 @@ inline int insideViews(const Scene& s, const FrameBuffer& fb,
     for (int x = 0; x < fb.width; ++x) {
       const std::size_t i = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
       if (fb.primitive[i] < 0) continue;
-      const Eigen::Vector4d X = Minv * Eigen::Vector4d(x + 0.5, y + 0.5, fb.depth[i], 1.0);
-      const Eigen::Vector3d p = X.head<3>() / X.w();
-      const Eigen::Vector3d g = s.primitives[std::size_t(fb.primitive[i])].quadric.gradient(p);
-      const Eigen::Vector3d v = s.camera.toViewer(p);
-      if (g.dot(v) < -0.05 * g.norm() * v.norm() && !(expected && expected(p))) ++n;
+      const Eigen::Vector3d p = pixelPoint(Minv, x, y, fb.depth[i]);
+      if (seenFromInside(s, fb.primitive[i], p) && !(expected && expected(p))) ++n;
     }
   return n;
 }
@@ -108,8 +119,7 @@ inline std::vector<char> nearTruthContours(const Scene& s, const FrameBuffer& tr
     for (int x = 0; x < W; ++x) {
       const std::size_t i = std::size_t(y) * std::size_t(W) + std::size_t(x);
       if (truth.object[i] < 0) continue;
-      const Eigen::Vector4d X = Minv * Eigen::Vector4d(x + 0.5, y + 0.5, truth.depth[i], 1.0);
-      const Eigen::Vector3d p = X.head<3>() / X.w();
+      const Eigen::Vector3d p = pixelPoint(Minv, x, y, truth.depth[i]);
       dist[i] = (p - s.camera.eye).dot(forward);
       scale[i] = view.pixelsPerUnit(p);
     }
@@ -152,11 +162,7 @@ inline int cracksAwayFromContours(const Scene& s, const FrameBuffer& truth, cons
         continue;
       }
       if (!closed || fb.primitive[i] < 0) continue;
-      const Eigen::Vector4d X = Minv * Eigen::Vector4d(x + 0.5, y + 0.5, fb.depth[i], 1.0);
-      const Eigen::Vector3d p = X.head<3>() / X.w();
-      const Eigen::Vector3d g = s.primitives[std::size_t(fb.primitive[i])].quadric.gradient(p);
-      const Eigen::Vector3d v = s.camera.toViewer(p);
-      if (g.dot(v) < -0.05 * g.norm() * v.norm()) ++n;
+      if (seenFromInside(s, fb.primitive[i], pixelPoint(Minv, x, y, fb.depth[i]))) ++n;
     }
   return n;
 }
