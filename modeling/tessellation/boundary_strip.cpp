@@ -68,6 +68,45 @@ std::optional<std::vector<Path>> chain(const std::vector<Segment>& segments) {
   return out;
 }
 
+// The polylines' segments (of positive length), less those found twice: a segment on two of a
+// piece's shared planes (the same two ends in two polylines) is where the piece is no wider
+// than the rounding of its corners, and its two neighbours meet along it with nothing between.
+std::vector<Segment> undoubledSegments(const std::vector<std::vector<Vector3d>>& polylines) {
+  using Key = std::pair<Vector3d, Vector3d>;
+  auto less = [](const Key& a, const Key& b) {
+    if (a.first != b.first) return lexLess(a.first, b.first);
+    return lexLess(a.second, b.second);
+  };
+  std::map<Key, int, decltype(less)> count(less);
+  std::vector<Segment> all;
+  for (const auto& line : polylines)
+    for (std::size_t i = 0; i + 1 < line.size(); ++i)
+      if (line[i] != line[i + 1]) {
+        all.push_back({line[i], line[i + 1]});
+        ++count[lexLess(line[i + 1], line[i]) ? Key{line[i + 1], line[i]} : Key{line[i], line[i + 1]}];
+      }
+  std::vector<Segment> out;
+  for (const Segment& sg : all)
+    if (count[lexLess(sg.second, sg.first) ? Key{sg.second, sg.first} : Key{sg.first, sg.second}] % 2 == 1)
+      out.push_back(sg);
+  return out;
+}
+
+// Distance from x to the nearest segment of the polylines.
+double distanceToSegments(const Vector3d& x, const std::vector<std::vector<Vector3d>>& polylines) {
+  double best = 1e300;
+  for (const auto& line : polylines)
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const Vector3d& a = line[i];
+      const Vector3d& b = line[std::min(i + 1, line.size() - 1)];
+      const Vector3d d = b - a;
+      const double len2 = d.squaredNorm();
+      const double t = len2 > 0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+      best = std::min(best, (x - (a + t * d)).norm());
+    }
+  return best;
+}
+
 // Cumulative arc length of a path, as fractions of its length (by index when it has none).
 std::vector<double> arcFractions(const std::vector<Vector3d>& p) {
   std::vector<double> f(p.size(), 0.0);
@@ -481,13 +520,45 @@ std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
       if (onPlaneWithinRounding(h, e.first) && onPlaneWithinRounding(h, e.second)) return true;
     return false;
   };
-  std::vector<Segment> inner, outer;
+  std::vector<Segment> inner;
   for (const auto& [e, uses] : keptUse)
     if (uses == 1 && removedEdge.count(e)) inner.push_back(e);
-  for (const auto& line : polylines)
-    for (std::size_t i = 0; i + 1 < line.size(); ++i)
-      if (line[i] != line[i + 1]) outer.push_back({line[i], line[i + 1]});
-  const auto in = chain(inner), out = chain(outer);
+  const std::vector<Segment> outer = undoubledSegments(polylines);
+  if (outer.empty()) {
+    // Every polyline segment lies on two of the piece's shared planes: the piece is a sliver
+    // (its corners met when they were snapped, or its arcs on two planes have one chord to
+    // the tolerance). When all its surface lies within the tolerance (or kMergeEnds) of those
+    // segments, its neighbours meet along them and the piece draws nothing; else it is refused.
+    for (std::size_t t = 0; t < nsurf; ++t)
+      for (int k = 0; k < 3; ++k) {
+        const Vector3d& x = pos(t, k);
+        const double d = distanceToSegments(x, polylines);
+        const bool within = d <= kMergeEnds * (1 + x.norm()) || (tol.world > 0 && d <= tol.world) ||
+                            (tol.view && tol.pixels > 0 && d * tol.view->pixelsPerUnit(x) <= tol.pixels);
+        if (!within) return std::nullopt;
+      }
+    Rebuilt r;
+    r.mesh.positions.reserve(3 * (mesh.triangles.size() - nsurf));
+    for (std::size_t t = nsurf; t < mesh.triangles.size(); ++t) {
+      const int base = int(r.mesh.positions.size());
+      for (int k = 0; k < 3; ++k) {
+        r.mesh.positions.push_back(pos(t, k));
+        r.mesh.normals.push_back(mesh.normals[std::size_t(mesh.triangles[t][k])]);
+      }
+      r.mesh.triangles.push_back({base, base + 1, base + 2});
+    }
+    return r;
+  }
+  const auto in = chain(inner);
+  auto out = chain(outer);
+  // With no open kept chain to end on, an open path whose ends are within kMergeEnds of each
+  // other (an arc of the shared curve too short for its ends to be found, missing alike on
+  // both sides) is closed by the edge between them.
+  if (in && out && std::none_of(in->begin(), in->end(), [](const Path& c) { return !c.closed; }))
+    for (Path& o : *out) {
+      const Vector3d &f = o.points.front(), &b = o.points.back();
+      if (!o.closed && o.points.size() >= 3 && (b - f).norm() <= kMergeEnds * (1 + f.norm())) o.closed = true;
+    }
   if (!in || !out || out->empty()) return std::nullopt;
 
   TriangleMesh3 strip;

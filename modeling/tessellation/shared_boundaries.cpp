@@ -191,6 +191,7 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
   // 4. Per piece: its planes with a polyline, and the polylines on them.
   std::vector<std::vector<HalfSpace>> planes(prims.size());
   std::vector<std::vector<std::vector<Vector3d>>> lines(prims.size());
+  std::vector<std::vector<int>> linePlanes(prims.size());  // the clip index of each of lines[i]
   for (std::size_t m = 0; m < pairs.size(); ++m) {
     const Pair& p = pairs[m];
     if (sampled[m] != 1 || p.group->refused) continue;
@@ -199,6 +200,14 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
       const HalfSpace& h = prims[std::size_t(i)].clip[std::size_t(k)];
       auto& pl = planes[std::size_t(i)];
       if (std::none_of(pl.begin(), pl.end(), [&](const HalfSpace& x) { return x.p == h.p; })) pl.push_back(h);
+      // The piece's side of a plane is one boundary: an arc that two pieces across it both
+      // end on (they overlap there, within the rounding of their corners) is drawn once.
+      auto& mine = linePlanes[std::size_t(i)];
+      bool seen = false;
+      for (std::size_t l = 0; l < mine.size() && !seen; ++l)
+        seen = mine[l] == k && lines[std::size_t(i)][l] == p.polyline;
+      if (seen) continue;
+      mine.push_back(k);
       lines[std::size_t(i)].push_back(p.polyline);
     }
   }

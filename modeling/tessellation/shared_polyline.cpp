@@ -115,12 +115,18 @@ std::optional<std::vector<Vector3d>> traceSharedCurve(const Quadric& q, const Ha
 
 std::vector<Vector3d> sharedCurveEnds(const Quadric& q, const HalfSpace& h, const std::vector<HalfSpace>& face) {
   const Vector3d nh = h.p.head<3>().normalized();
-  // Two opposite planes in the face: the pieces meet along a line at most, sharing no arc.
+  // Two planes of the face that cut h along one line from opposite sides (their traces on h
+  // opposite: the same plane, reversed, or two planes through one line of h, as where cells'
+  // tetrahedra meet at an edge on a shared plane): the pieces meet along a line at most,
+  // sharing no arc. A plane's trace on h is its coefficients less their component along h's.
+  std::vector<Eigen::Vector4d> trace;
+  for (const HalfSpace& g : face) {
+    const Eigen::Vector4d t = g.p - (g.p.dot(h.p) / h.p.squaredNorm()) * h.p;
+    trace.push_back(t.norm() > 1e-12 * g.p.norm() ? Eigen::Vector4d(t.normalized()) : Eigen::Vector4d::Zero());
+  }
   for (std::size_t i = 0; i < face.size(); ++i)
-    for (std::size_t j = i + 1; j < face.size(); ++j) {
-      const double ni = face[i].p.head<3>().norm(), nj = face[j].p.head<3>().norm();
-      if (ni > 0 && nj > 0 && (face[i].p / ni + face[j].p / nj).norm() <= 1e-12) return {};
-    }
+    for (std::size_t j = i + 1; j < face.size(); ++j)
+      if (trace[i].norm() > 0 && trace[j].norm() > 0 && (trace[i] + trace[j]).norm() <= 1e-9) return {};
   std::vector<Vector3d> ends;
   for (const HalfSpace& g : face)
     for (const Vector3d& x : lineRoots(q, h, g)) {

@@ -6,8 +6,9 @@
 //    clip plane of either piece, the roots of q along that line that lie inside every other
 //    plane of both pieces (within rounding) and where the curve crosses a plane of the face
 //    rather than touching it (a G1 cell's surface is tangent to faces of its tetrahedron).
-//    One end or none, or two opposite planes among the face's (pieces that meet along a
-//    line of the plane only): the faces share no arc. More than two (a conic can cross a
+//    One end or none, or two planes among the face's that cut h along one line from
+//    opposite sides (opposite planes, or two planes through one line of h: pieces that meet
+//    along that line only): the faces share no arc. More than two (a conic can cross a
 //    face four times): each end not yet in an arc is traced into the face (below) to the
 //    end it reaches; an end with no way into the face (the curve only passes through a
 //    corner of it) is in no arc.

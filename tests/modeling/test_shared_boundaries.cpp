@@ -148,7 +148,9 @@ INSTANTIATE_TEST_SUITE_P(SharedBoundaries, SharedBoundaryScene,
                                            SceneCase{"macropatch_g1.json", true, true, true},
                                            SceneCase{"macropatch_bezier.json", false, false, false},
                                            SceneCase{"bspline_g0.json", true, false, false},
+                                           SceneCase{"bspline_g1.json", true, false, true},
                                            SceneCase{"bspline_volume_g0.json", true, true, false},
                                            SceneCase{"quartic.json", true, true, true},
                                            SceneCase{"torus.json", true, true, true}),
                          caseName);
+

@@ -107,10 +107,10 @@ INSTANTIATE_TEST_SUITE_P(Scenes, SharedBoundaryPinholes,
                                            PinholeCase{"macropatch_g1.json", true},
                                            PinholeCase{"bspline_g1.json", false},
                                            PinholeCase{"torus.json", true}));
-// Disabled: bspline_volume_g1's facets crack (3 / 7 pixels at 2 / 0.5 px: a line of back
-// faces near (152, 211) where the reference shows the surface, and back faces of cos -0.8
-// along the shallow fold near (400, 187); docs/COMPARE.md "Shared polylines"). 150 s in
-// Release, most of it loading and tessellating the volume's 107 k cells.
-INSTANTIATE_TEST_SUITE_P(DISABLED_OpenCracks, SharedBoundaryPinholes,
+// Disabled for its cost alone: 150 s in Release (most of it loading and tessellating the
+// volume's 107 k cells), more than CI's margin. It passes since the stitching's degenerate
+// cases were handled (0 cracks at 2 and 0.5 px; 3 / 7 before; docs/COMPARE.md "Cracks in
+// the drawn facets"). Run it with --gtest_also_run_disabled_tests.
+INSTANTIATE_TEST_SUITE_P(DISABLED_Volume, SharedBoundaryPinholes,
                          ::testing::Values(PinholeCase{"bspline_volume_g1.json", true}));
 #endif  // QACC_HAVE_OSMESA
