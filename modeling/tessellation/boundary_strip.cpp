@@ -70,7 +70,8 @@ std::optional<std::vector<Path>> chain(const std::vector<Segment>& segments) {
 
 // The polylines' segments (of positive length), less those found twice: a segment on two of a
 // piece's shared planes (the same two ends in two polylines) is where the piece is no wider
-// than the rounding of its corners, and its two neighbours meet along it with nothing between.
+// than the rounding of its corners, and its two neighbours meet along it with nothing between;
+// and less the spurs (below).
 std::vector<Segment> undoubledSegments(const std::vector<std::vector<Vector3d>>& polylines) {
   using Key = std::pair<Vector3d, Vector3d>;
   auto less = [](const Key& a, const Key& b) {
@@ -89,6 +90,24 @@ std::vector<Segment> undoubledSegments(const std::vector<std::vector<Vector3d>>&
   for (const Segment& sg : all)
     if (count[lexLess(sg.second, sg.first) ? Key{sg.second, sg.first} : Key{sg.first, sg.second}] % 2 == 1)
       out.push_back(sg);
+  // A spur: a segment from a junction (a point ending three or more segments) to a point
+  // ending it alone, where a neighbour ends on an arc this piece reaches only at the junction
+  // (they overlap there within the rounding of their corners): left out, while one is found.
+  for (bool found = true; found;) {
+    found = false;
+    std::map<Vector3d, int, PointKey> degree;
+    for (const auto& [a, b] : out) {
+      ++degree[a];
+      ++degree[b];
+    }
+    for (std::size_t i = 0; i < out.size() && !found; ++i) {
+      const int da = degree[out[i].first], db = degree[out[i].second];
+      if ((da == 1 && db >= 3) || (db == 1 && da >= 3)) {
+        out.erase(out.begin() + std::ptrdiff_t(i));
+        found = true;
+      }
+    }
+  }
   return out;
 }
 

@@ -71,8 +71,11 @@ std::optional<std::vector<Vector3d>> traceSharedCurve(const Quadric& q, const Ha
   Vector3d t = tangent(a);
   if (!(t.norm() > 0)) return std::nullopt;
   t.normalize();
-  // The way into the face.
-  const double probe = 1e-3 * span;
+  // The way into the face: probed at 1e-3 of the span, or a quarter of the way to the nearest
+  // target when that is nearer (an arc shorter than the probe, at a corner of the face).
+  double probe = 1e-3 * span;
+  for (const Vector3d& y : targets)
+    if ((y - a).norm() > 0) probe = std::min(probe, 0.25 * (y - a).norm());
   const Vector3d fwd = curve.ontoCurve(a + probe * t, h, span), bwd = curve.ontoCurve(a - probe * t, h, span);
   const bool inF = onCurve(fwd) && insideFace(face, fwd, 1e-9), inB = onCurve(bwd) && insideFace(face, bwd, 1e-9);
   if (inF == inB) return std::nullopt;

@@ -7,6 +7,7 @@
 // take the degenerate way.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "modeling/tessellation/boundary_strip.h"
@@ -114,4 +115,40 @@ TEST(ZipBoundaryStrip, PathWhoseEndsAreARoundingApartIsClosed) {
     EXPECT_TRUE(isOpen(p2, p0b));
     EXPECT_TRUE(isOpen(p0b, p0));
   }
+}
+
+// Arcs shorter than the trace's probe: the unit circle on z = 0 within the band
+// -1e-5 <= y <= 0 is two arcs about 1e-5 long at (±1, 0, 0), 2 apart. Each end is traced into
+// the face with a probe shorter than the way to the nearest other end (1e-3 of the span, 0.002,
+// would step out of the band both ways and lose both arcs).
+TEST(SharedCurveEnds, ArcsShorterThanTheProbeAreFound) {
+  const Quadric q = unitSphere();
+  const HalfSpace h(Vector4d(0, 0, 1, 0));
+  const std::vector<HalfSpace> band{HalfSpace(Vector4d(0, 1, 0, 0)), HalfSpace(Vector4d(0, -1, 0, -1e-5))};
+  const std::vector<Vector3d> ends = sharedCurveEnds(q, h, band);
+  ASSERT_EQ(ends.size(), 4u);
+  for (std::size_t a = 0; a < 4; a += 2) {
+    EXPECT_LT((ends[a] - ends[a + 1]).norm(), 2e-5) << a;
+    EXPECT_NEAR(std::abs(ends[a].x()), 1.0, 1e-9) << a;
+  }
+}
+
+// A spur: the piece's polylines run round a triangle and, from one of its corners, along a
+// segment no other of them reaches (a neighbour's arc the piece touches only at that corner).
+// The spur is left out: the new triangles use the three sides once each and nothing else.
+TEST(ZipBoundaryStrip, SpurFromACornerIsLeftOut) {
+  const Quadric q = unitSphere();
+  const Vector3d p0(0, 0, 1), p1 = Vector3d(0.1, 0, 1).normalized(), p2 = Vector3d(0, 0.1, 1).normalized();
+  const Vector3d spur = Vector3d(-0.05, -0.05, 1).normalized();
+  const std::vector<HalfSpace> planes{HalfSpace(Vector4d(0, -1, 0, 0)), HalfSpace(Vector4d(-1, 0, 0, 0)),
+                                      HalfSpace(Vector4d(p1.cross(p2).x(), p1.cross(p2).y(), p1.cross(p2).z(), 0))};
+  PolylineTolerance tol;
+  tol.world = 1e-2;
+  TriangleMesh3 mesh = triangleOnSphere(p0, p1, p2);
+  std::size_t surface = 1;
+  ASSERT_TRUE(zipBoundaryStrip(mesh, surface, planes, {{p0, p1}, {p1, p2}, {p2, p0}, {p0, spur}}, q, tol));
+  const EdgeUse use = edgeUse(mesh);
+  EXPECT_EQ(use.overused, 0u);
+  EXPECT_EQ(use.open.size(), 3u);
+  for (const OpenEdge& e : use.open) EXPECT_TRUE(e.a != spur && e.b != spur);
 }
