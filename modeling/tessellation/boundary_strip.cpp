@@ -87,9 +87,11 @@ std::vector<Segment> undoubledSegments(const std::vector<std::vector<Vector3d>>&
         ++count[lexLess(line[i + 1], line[i]) ? Key{line[i + 1], line[i]} : Key{line[i], line[i + 1]}];
       }
   std::vector<Segment> out;
-  for (const Segment& sg : all)
-    if (count[lexLess(sg.second, sg.first) ? Key{sg.second, sg.first} : Key{sg.first, sg.second}] % 2 == 1)
-      out.push_back(sg);
+  for (const Segment& sg : all) {
+    int& c = count[lexLess(sg.second, sg.first) ? Key{sg.second, sg.first} : Key{sg.first, sg.second}];
+    if (c % 2 == 1) out.push_back(sg);
+    c = 0;  // each segment once
+  }
   // A spur: a segment from a junction (a point ending three or more segments) to a point
   // ending it alone, where a neighbour ends on an arc this piece reaches only at the junction
   // (they overlap there within the rounding of their corners): left out, while one is found.
@@ -548,9 +550,11 @@ std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
     // (its corners met when they were snapped, or its arcs on two planes have one chord to
     // the tolerance). When all its surface lies within the tolerance (or kMergeEnds) of those
     // segments, its neighbours meet along them and the piece draws nothing; else it is refused.
+    // Its vertices and its triangles' centroids (the chords may turn a corner, so a triangle
+    // with its vertices on them can still cover surface away from them).
     for (std::size_t t = 0; t < nsurf; ++t)
-      for (int k = 0; k < 3; ++k) {
-        const Vector3d& x = pos(t, k);
+      for (int k = 0; k < 4; ++k) {
+        const Vector3d x = k < 3 ? pos(t, k) : Vector3d((pos(t, 0) + pos(t, 1) + pos(t, 2)) / 3.0);
         const double d = distanceToSegments(x, polylines);
         const bool within = d <= kMergeEnds * (1 + x.norm()) || (tol.world > 0 && d <= tol.world) ||
                             (tol.view && tol.pixels > 0 && d * tol.view->pixelsPerUnit(x) <= tol.pixels);
@@ -573,7 +577,12 @@ std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
   // With no open kept chain to end on, an open path whose ends are within kMergeEnds of each
   // other (an arc of the shared curve too short for its ends to be found, missing alike on
   // both sides) is closed by the edge between them.
-  if (in && out && std::none_of(in->begin(), in->end(), [](const Path& c) { return !c.closed; }))
+  // Nor any edge of the piece's own on unshared planes, which the fallback (fillLoops) would
+  // join the path's ends to.
+  const bool ownEdges = std::any_of(allUse.begin(), allUse.end(), [&](const auto& eu) {
+    return eu.second == 1 && removedEdge.count(eu.first) && !onSharedPlane(eu.first);
+  });
+  if (in && out && !ownEdges && std::none_of(in->begin(), in->end(), [](const Path& c) { return !c.closed; }))
     for (Path& o : *out) {
       const Vector3d &f = o.points.front(), &b = o.points.back();
       if (!o.closed && o.points.size() >= 3 && (b - f).norm() <= kMergeEnds * (1 + f.norm())) o.closed = true;

@@ -4,13 +4,14 @@
 // between kept and removed triangles — and the polylines is triangulated again:
 //  - the polylines, joined end to end where their ends are equal, form the piece's new
 //    boundary paths (a closed loop for a piece whose boundary is all shared); a segment found
-//    in two of them (on two of the piece's planes: a sliver between two neighbours that end
-//    on one chord) is left out of both, so is a spur (a segment from a point ending three to
-//    one ending it alone: a neighbour's arc the piece reaches only at a corner), and a piece
-//    left with none draws nothing when all its surface lies within the tolerance (or
-//    kMergeEnds) of those chords — refused otherwise;
-//    with no open kept chain, an open path whose ends are within kMergeEnds is closed (an arc
-//    too short for its ends to be found, missing alike on both sides);
+//    an even number of times in them (twice: on two of the piece's planes, a sliver between
+//    two neighbours that end on one chord) is left out, so is a spur (a segment from a point
+//    ending three or more to one ending it alone: a neighbour's arc the piece reaches only at
+//    a corner), and a piece left with none draws no surface when all its vertices and
+//    triangle centroids lie within the tolerance (or kMergeEnds) of those chords — refused
+//    otherwise; with no open kept chain and no edge of its own on an unshared plane, an open
+//    path whose ends are within kMergeEnds is closed (an arc too short for its ends to be
+//    found, missing alike on both sides);
 //  - each such path is paired with the kept mesh's inner chain nearest to it (a loop with a
 //    loop, an open path with the open chain whose ends are nearest its ends), and the two
 //    are zipped: from one end, a triangle at a time, advancing on the side whose next vertex

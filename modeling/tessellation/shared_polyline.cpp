@@ -75,7 +75,7 @@ std::optional<std::vector<Vector3d>> traceSharedCurve(const Quadric& q, const Ha
   // target when that is nearer (an arc shorter than the probe, at a corner of the face).
   double probe = 1e-3 * span;
   for (const Vector3d& y : targets)
-    if ((y - a).norm() > 0) probe = std::min(probe, 0.25 * (y - a).norm());
+    if ((y - a).norm() > 0) probe = std::min(probe, std::max(0.25 * (y - a).norm(), 1e-6 * (1 + a.norm())));
   const Vector3d fwd = curve.ontoCurve(a + probe * t, h, span), bwd = curve.ontoCurve(a - probe * t, h, span);
   const bool inF = onCurve(fwd) && insideFace(face, fwd, 1e-9), inB = onCurve(bwd) && insideFace(face, bwd, 1e-9);
   if (inF == inB) return std::nullopt;
