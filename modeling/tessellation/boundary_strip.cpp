@@ -24,6 +24,17 @@ struct Path {
 
 using Segment = std::pair<Vector3d, Vector3d>;
 
+// An edge as its two ends in lexicographic order, ordered lexicographically: the key of the
+// edge maps below, the same whichever way a triangle runs along it.
+using EdgeKey = std::pair<Vector3d, Vector3d>;
+EdgeKey edgeKey(const Vector3d& a, const Vector3d& b) { return lexLess(b, a) ? EdgeKey{b, a} : EdgeKey{a, b}; }
+struct EdgeLess {
+  bool operator()(const EdgeKey& a, const EdgeKey& b) const {
+    if (a.first != b.first) return lexLess(a.first, b.first);
+    return lexLess(a.second, b.second);
+  }
+};
+
 // The segments joined where their ends are equal: open paths (from an end used once) and
 // closed loops; std::nullopt when a point ends more than two segments.
 std::optional<std::vector<Path>> chain(const std::vector<Segment>& segments) {
@@ -73,22 +84,17 @@ std::optional<std::vector<Path>> chain(const std::vector<Segment>& segments) {
 // than the rounding of its corners, and its two neighbours meet along it with nothing between;
 // and less the spurs (below).
 std::vector<Segment> undoubledSegments(const std::vector<std::vector<Vector3d>>& polylines) {
-  using Key = std::pair<Vector3d, Vector3d>;
-  auto less = [](const Key& a, const Key& b) {
-    if (a.first != b.first) return lexLess(a.first, b.first);
-    return lexLess(a.second, b.second);
-  };
-  std::map<Key, int, decltype(less)> count(less);
+  std::map<EdgeKey, int, EdgeLess> count;
   std::vector<Segment> all;
   for (const auto& line : polylines)
     for (std::size_t i = 0; i + 1 < line.size(); ++i)
       if (line[i] != line[i + 1]) {
         all.push_back({line[i], line[i + 1]});
-        ++count[lexLess(line[i + 1], line[i]) ? Key{line[i + 1], line[i]} : Key{line[i], line[i + 1]}];
+        ++count[edgeKey(line[i], line[i + 1])];
       }
   std::vector<Segment> out;
   for (const Segment& sg : all) {
-    int& c = count[lexLess(sg.second, sg.first) ? Key{sg.second, sg.first} : Key{sg.first, sg.second}];
+    int& c = count[edgeKey(sg.first, sg.second)];
     if (c % 2 == 1) out.push_back(sg);
     c = 0;  // each segment once
   }
@@ -174,18 +180,13 @@ std::vector<Vector3d> openLoop(const std::vector<Vector3d>& loop, const Vector3d
 // edges stays: an island cut off by the removal (a triangle or two between the strips) would
 // leave a second kept chain with no polyline of its own.
 void removeAllButLargest(const TriangleMesh3& mesh, std::size_t nsurf, std::vector<char>& removed) {
-  std::map<std::pair<Vector3d, Vector3d>, std::vector<std::size_t>,
-           bool (*)(const std::pair<Vector3d, Vector3d>&, const std::pair<Vector3d, Vector3d>&)>
-      byEdge([](const std::pair<Vector3d, Vector3d>& a, const std::pair<Vector3d, Vector3d>& b) {
-        if (a.first != b.first) return lexLess(a.first, b.first);
-        return lexLess(a.second, b.second);
-      });
+  std::map<EdgeKey, std::vector<std::size_t>, EdgeLess> byEdge;
   auto pos = [&](std::size_t t, int k) -> const Vector3d& { return mesh.positions[std::size_t(mesh.triangles[t][k])]; };
   for (std::size_t t = 0; t < nsurf; ++t) {
     if (removed[t]) continue;
     for (int k = 0; k < 3; ++k) {
       const Vector3d &a = pos(t, k), &b = pos(t, (k + 1) % 3);
-      byEdge[lexLess(b, a) ? std::pair{b, a} : std::pair{a, b}].push_back(t);
+      byEdge[edgeKey(a, b)].push_back(t);
     }
   }
   std::vector<int> component(nsurf, -1);
@@ -202,7 +203,7 @@ void removeAllButLargest(const TriangleMesh3& mesh, std::size_t nsurf, std::vect
       ++sizes.back();
       for (int k = 0; k < 3; ++k) {
         const Vector3d &a = pos(t, k), &b = pos(t, (k + 1) % 3);
-        for (std::size_t u : byEdge[lexLess(b, a) ? std::pair{b, a} : std::pair{a, b}])
+        for (std::size_t u : byEdge[edgeKey(a, b)])
           if (component[u] < 0) {
             component[u] = c;
             stack.push_back(u);
@@ -288,13 +289,7 @@ struct Strip {
   // the surface, as a third vertex of three triangles.
   // Returns the largest excess() left (at most 1 when every new triangle is within the tolerance).
   double refine(const PolylineTolerance& tol, std::size_t replaced) {
-    using Key = std::pair<Vector3d, Vector3d>;
-    auto less = [](const Key& a, const Key& b) {
-      if (a.first != b.first) return lexLess(a.first, b.first);
-      return lexLess(a.second, b.second);
-    };
     auto at = [&](std::size_t t, int k) -> const Vector3d& { return out.positions[std::size_t(out.triangles[t][k])]; };
-    auto keyOf = [](const Vector3d& a, const Vector3d& b) { return lexLess(b, a) ? Key{b, a} : Key{a, b}; };
     // A point of the surface near m: its closest point, unless that lies farther than
     // `reach` (another sheet, or no convergence).
     auto ontoSurface = [&](const Vector3d& m, double reach, Vector3d& p) {
@@ -318,11 +313,11 @@ struct Strip {
       for (std::size_t t = 0; t < out.triangles.size(); ++t)
         if (longerThanTolerance(t) && excess(t, tol) > 1.0) over.push_back(t);
       if (over.empty()) return 1.0;
-      std::map<Key, std::vector<std::size_t>, decltype(less)> uses(less);
+      std::map<EdgeKey, std::vector<std::size_t>, EdgeLess> uses;
       for (std::size_t t = 0; t < out.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) uses[keyOf(at(t, k), at(t, (k + 1) % 3))].push_back(t);
+        for (int k = 0; k < 3; ++k) uses[edgeKey(at(t, k), at(t, (k + 1) % 3))].push_back(t);
       std::vector<char> busy(out.triangles.size(), 0);
-      std::map<Key, Vector3d, decltype(less)> mid(less);
+      std::map<EdgeKey, Vector3d, EdgeLess> mid;
       std::map<std::size_t, Vector3d> centre;
       for (std::size_t t : over) {
         if (busy[t]) continue;
@@ -331,7 +326,7 @@ struct Strip {
         bool anyShared = false;
         for (int k = 0; k < 3; ++k) {
           const Vector3d &a = at(t, k), &b = at(t, (k + 1) % 3);
-          const auto& ts = uses[keyOf(a, b)];
+          const auto& ts = uses[edgeKey(a, b)];
           if (ts.size() != 2) continue;
           anyShared = true;
           const std::size_t other = ts[0] == t ? ts[1] : ts[0];
@@ -343,9 +338,9 @@ struct Strip {
         if (best >= 0) {
           const Vector3d &a = at(t, best), &b = at(t, (best + 1) % 3);
           if (!ontoSurface(0.5 * (a + b), 0.5 * (b - a).norm(), p)) continue;
-          const auto& ts = uses[keyOf(a, b)];
+          const auto& ts = uses[edgeKey(a, b)];
           busy[ts[0]] = busy[ts[1]] = 1;
-          mid.emplace(keyOf(a, b), p);
+          mid.emplace(edgeKey(a, b), p);
         } else if (!anyShared) {
           const Vector3d c = (at(t, 0) + at(t, 1) + at(t, 2)) / 3.0;
           const double size = std::max({(at(t, 1) - at(t, 0)).norm(), (at(t, 2) - at(t, 1)).norm(),
@@ -381,7 +376,7 @@ struct Strip {
         int split = -1;
         Vector3d p;
         for (int k = 0; k < 3 && split < 0; ++k) {
-          auto it = mid.find(keyOf(v[k], v[(k + 1) % 3]));
+          auto it = mid.find(edgeKey(v[k], v[(k + 1) % 3]));
           if (it != mid.end()) {
             split = k;
             p = it->second;
@@ -483,6 +478,31 @@ struct Rebuilt {
   std::size_t surface = 0;
   double excess = 0;  // the strip's largest error over the tolerance (Strip::refine)
 };
+
+// The piece's kept surface triangles (the first nsurf of mesh not removed), the strip, then
+// its caps (the triangles after nsurf).
+Rebuilt assemble(const TriangleMesh3& mesh, std::size_t nsurf, const std::vector<char>& removed,
+                 const TriangleMesh3& strip, double excess) {
+  TriangleMesh3 result;
+  auto copy = [&](std::size_t t) {
+    const int base = int(result.positions.size());
+    for (int k = 0; k < 3; ++k) {
+      result.positions.push_back(mesh.positions[std::size_t(mesh.triangles[t][k])]);
+      result.normals.push_back(mesh.normals[std::size_t(mesh.triangles[t][k])]);
+    }
+    result.triangles.push_back({base, base + 1, base + 2});
+  };
+  for (std::size_t t = 0; t < nsurf; ++t)
+    if (!removed[t]) copy(t);
+  result.append(strip);
+  Rebuilt r;
+  r.surface = result.triangles.size();
+  for (std::size_t t = nsurf; t < mesh.triangles.size(); ++t) copy(t);
+  r.mesh = std::move(result);
+  r.excess = excess;
+  return r;
+}
+
 std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
                                 const std::vector<HalfSpace>& sharedPlanes,
                                 const std::vector<std::vector<Vector3d>>& polylines, const Quadric& q,
@@ -503,21 +523,13 @@ std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
   }
 
   // Edges of the kept triangles used once that a removed triangle uses too: the inner chains.
-  using EdgeKey = std::pair<Vector3d, Vector3d>;
-  auto key = [](const Vector3d& a, const Vector3d& b) { return lexLess(b, a) ? EdgeKey{b, a} : EdgeKey{a, b}; };
-  struct EdgeLess {
-    bool operator()(const EdgeKey& a, const EdgeKey& b) const {
-      if (a.first != b.first) return lexLess(a.first, b.first);
-      return lexLess(a.second, b.second);
-    }
-  };
   std::map<EdgeKey, int, EdgeLess> keptUse;
   std::map<EdgeKey, bool, EdgeLess> removedEdge;
   std::map<Vector3d, Vector3d, PointKey> keptNormals;
   double windingSum = 0;
   for (std::size_t t = 0; t < nsurf; ++t)
     for (int k = 0; k < 3; ++k) {
-      const EdgeKey e = key(pos(t, k), pos(t, (k + 1) % 3));
+      const EdgeKey e = edgeKey(pos(t, k), pos(t, (k + 1) % 3));
       if (removed[t]) {
         removedEdge[e] = true;
       } else {
@@ -535,7 +547,7 @@ std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
   }
   std::map<EdgeKey, int, EdgeLess> allUse;
   for (std::size_t t = 0; t < nsurf; ++t)
-    for (int k = 0; k < 3; ++k) ++allUse[key(pos(t, k), pos(t, (k + 1) % 3))];
+    for (int k = 0; k < 3; ++k) ++allUse[edgeKey(pos(t, k), pos(t, (k + 1) % 3))];
   auto onSharedPlane = [&](const EdgeKey& e) {
     for (const HalfSpace& h : sharedPlanes)
       if (onPlaneWithinRounding(h, e.first) && onPlaneWithinRounding(h, e.second)) return true;
@@ -560,25 +572,14 @@ std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
                             (tol.view && tol.pixels > 0 && d * tol.view->pixelsPerUnit(x) <= tol.pixels);
         if (!within) return std::nullopt;
       }
-    Rebuilt r;
-    r.mesh.positions.reserve(3 * (mesh.triangles.size() - nsurf));
-    for (std::size_t t = nsurf; t < mesh.triangles.size(); ++t) {
-      const int base = int(r.mesh.positions.size());
-      for (int k = 0; k < 3; ++k) {
-        r.mesh.positions.push_back(pos(t, k));
-        r.mesh.normals.push_back(mesh.normals[std::size_t(mesh.triangles[t][k])]);
-      }
-      r.mesh.triangles.push_back({base, base + 1, base + 2});
-    }
-    return r;
+    return assemble(mesh, nsurf, std::vector<char>(nsurf, 1), TriangleMesh3(), 0.0);
   }
   const auto in = chain(inner);
   auto out = chain(outer);
-  // With no open kept chain to end on, an open path whose ends are within kMergeEnds of each
-  // other (an arc of the shared curve too short for its ends to be found, missing alike on
-  // both sides) is closed by the edge between them.
-  // Nor any edge of the piece's own on unshared planes, which the fallback (fillLoops) would
-  // join the path's ends to.
+  // With no open kept chain to end on, nor any edge of the piece's own on unshared planes
+  // (which the fallback, fillLoops, would join the path's ends to), an open path whose ends
+  // are within kMergeEnds of each other (an arc of the shared curve too short for its ends to
+  // be found, missing alike on both sides) is closed by the edge between them.
   const bool ownEdges = std::any_of(allUse.begin(), allUse.end(), [&](const auto& eu) {
     return eu.second == 1 && removedEdge.count(eu.first) && !onSharedPlane(eu.first);
   });
@@ -670,27 +671,8 @@ std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
     }
   }
 
-  Rebuilt r;
-  r.excess = s.refine(tol, std::size_t(std::count(removed.begin(), removed.end(), char(1))));
-
-  // Kept surface triangles, the strip, then the caps.
-  TriangleMesh3 result;
-  auto copy = [&](std::size_t t) {
-    const int base = int(result.positions.size());
-    for (int k = 0; k < 3; ++k) {
-      result.positions.push_back(pos(t, k));
-      result.normals.push_back(mesh.normals[std::size_t(mesh.triangles[t][k])]);
-    }
-    result.triangles.push_back({base, base + 1, base + 2});
-  };
-  for (std::size_t t = 0; t < nsurf; ++t)
-    if (!removed[t]) copy(t);
-  result.append(strip);
-  const std::size_t newSurface = result.triangles.size();
-  for (std::size_t t = nsurf; t < mesh.triangles.size(); ++t) copy(t);
-  r.mesh = std::move(result);
-  r.surface = newSurface;
-  return r;
+  const double excess = s.refine(tol, std::size_t(std::count(removed.begin(), removed.end(), char(1))));
+  return assemble(mesh, nsurf, removed, strip, excess);
 }
 
 }  // namespace

@@ -13,8 +13,7 @@
 //    end it reaches (the way in probed at 1e-3 of the ends' span, or a quarter of the way to
 //    the nearest other end not yet in an arc when that is nearer, not below 1e-6 of its
 //    distance from the origin, at least a unit: above the face test's slack); an end with no
-//    way into the face (the curve
-//    only passes through a corner of it) is in no arc.
+//    way into the face (the curve only passes through a corner of it) is in no arc.
 //  - Between two ends the curve is sampled by halving: the midpoint of a chord is moved onto
 //    the curve within h (Newton steps along the gradient's component in the plane) and the
 //    chord split there while its sagitta exceeds the tolerance (world units, or pixels in a

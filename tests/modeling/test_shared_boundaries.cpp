@@ -153,4 +153,3 @@ INSTANTIATE_TEST_SUITE_P(SharedBoundaries, SharedBoundaryScene,
                                            SceneCase{"quartic.json", true, true, true},
                                            SceneCase{"torus.json", true, true, true}),
                          caseName);
-

@@ -1,8 +1,9 @@
 // The shared boundary's degenerate cases, one at a time (shared_polyline.h, boundary_strip.h):
-// two pieces whose faces on a shared plane meet along a line share no arc; a piece whose
-// polylines all lie on two of its planes at once (a sliver) draws nothing when it lies within
-// the tolerance of them, and is refused when it does not; an open path whose ends are a
-// rounding apart, with nothing kept to end on, is closed. Each case was met on the B-spline
+// two pieces whose faces on a shared plane meet along a line share no arc; arcs shorter than
+// the trace's probe are found; a piece whose polylines all lie on two of its planes at once (a
+// sliver) draws nothing when it lies within the tolerance of them, and is refused when it does
+// not; an open path whose ends are a rounding apart, with nothing kept to end on, is closed; a
+// spur from a corner is left out. Each case was met on the B-spline
 // scenes (docs/COMPARE.md, "Cracks in the drawn facets"); each has a control that must not
 // take the degenerate way.
 #include <gtest/gtest.h>
