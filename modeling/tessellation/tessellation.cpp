@@ -138,8 +138,17 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, const Level& lv, con
     domain.position = [](const Vector3d& p) { return p; };
     domain.surface = &q;
     if (lv.view) {
-      const Eigen::AlignedBox3d box = surfaceBox(q, region.box, region.planes);
-      const int n = marchingCellsForPixelError(q, box, region.planes, *lv.view, lv.epsilon, lv.scale, lv.max_triangles);
+      Eigen::AlignedBox3d box = surfaceBox(q, region.box, region.planes);
+      int n = marchingCellsForPixelError(q, box, region.planes, *lv.view, lv.epsilon, lv.scale, lv.max_triangles);
+      // A piece smaller than a cell (a sliver of a B-spline cell: bspline_volume_g1 has some
+      // 1e-4 across, in slabs so thin that the scan keeps a box 0.1 across) is marched in
+      // its exact extent, one cell across: in cells larger than itself, the clip planes would
+      // cut the cells' triangles into a facet off the surface, pixels away from the piece.
+      if (lv.bounds && lv.bounds->bounded && !lv.bounds->empty &&
+          8 * lv.bounds->box.sizes().maxCoeff() < box.sizes().maxCoeff() / n) {
+        box = lv.bounds->box;
+        n = 1;
+      }
       marchQuadricBox(sb, q, box, n);
     } else {
       marchQuadricPiece(sb, q, region.box, region.planes, lv.target);
@@ -239,11 +248,16 @@ PrimitiveTessellation tessellateCovering(const Primitive& prim, const Level& lv,
   return t;
 }
 
+// At a triangle budget or a chord error the piece's extent is not needed up front: a piece
+// left with boundary defects is checked for emptiness, and an empty one draws nothing, as at
+// a pixel error.
 PrimitiveTessellation tessellateCovering(const Primitive& prim, int target, const Camera* camera, double aspect,
                                          int chordSamples) {
   Level lv;
   lv.target = target;
-  return tessellateCovering(prim, lv, camera, aspect, chordSamples);
+  PrimitiveTessellation t = tessellateCovering(prim, lv, camera, aspect, chordSamples);
+  if (t.boundary_defects > 0 && primitiveBounds(prim).empty) return PrimitiveTessellation{};
+  return t;
 }
 
 void checkOptions(const TessellationOptions& options) {
@@ -262,7 +276,11 @@ void checkOptions(const TessellationOptions& options) {
 PrimitiveTessellation tessellateToPixels(const Primitive& prim, const TessellationOptions& options,
                                          const Camera* camera, double aspect, const ScreenView& view) {
   const PrimitiveBounds bounds = primitiveBounds(prim);
-  if (bounds.empty || (bounds.bounded && !view.boxOnScreen(bounds.box, 2.0))) {
+  // No point of the surface inside the clip region: nothing to draw, as the accelerator draws
+  // nothing (its screen box, raster/pixel/window_primitive.h, is the same extent's). A grid
+  // would still leave triangles whose vertices lie outside the region.
+  if (bounds.empty) return PrimitiveTessellation{};
+  if (bounds.bounded && !view.boxOnScreen(bounds.box, 2.0)) {
     Level coarse;
     coarse.target = 8;
     PrimitiveTessellation t = tessellateOnce(prim, coarse, camera, aspect);

@@ -88,6 +88,8 @@ struct SceneCase {
   bool shares;  // has pieces on both sides of a clip plane (macropatch_bezier's cells do not)
   bool closed;  // a closed surface: no open edge at all
   bool heavy;   // a minute or more under the sanitizers: left to the Release suite
+  // Closed at a fixed count (64 triangles a piece) too; when not, that count is not checked.
+  bool fixed_count_closed = true;
 };
 
 // GoogleTest (and ctest's test list) name a case by its file, not by its bytes.
@@ -135,6 +137,7 @@ TEST_P(SharedBoundaryScene, EveryInteriorEdgeIsUsedTwiceWithinTheTolerance) {
     EXPECT_EQ(c.degenerate, 0u) << "eps " << eps;
     if (sc.closed) { EXPECT_TRUE(isWatertight(mesh)) << "eps " << eps << ": " << c.open << " open edges"; }
   }
+  if (!sc.fixed_count_closed) return;
   TessellationOptions o;
   o.triangles = 64;
   const TriangleMesh3 mesh = tessellateScene(s, o);
@@ -153,3 +156,10 @@ INSTANTIATE_TEST_SUITE_P(SharedBoundaries, SharedBoundaryScene,
                                            SceneCase{"quartic.json", true, true, true},
                                            SceneCase{"torus.json", true, true, true}),
                          caseName);
+
+// bspline_volume_g1 (41 839 pieces; 75 s a tolerance in Release, so out of the suite: run it
+// with --gtest_also_run_disabled_tests). Watertight at 2 and 0.5 px; not at a fixed count,
+// where pieces in slabs thinner than their marching cells get facets off the piece
+// (docs/COMPARE.md "Shared boundaries").
+INSTANTIATE_TEST_SUITE_P(DISABLED_Volume, SharedBoundaryScene,
+                         ::testing::Values(SceneCase{"bspline_volume_g1.json", true, true, true, false}), caseName);
