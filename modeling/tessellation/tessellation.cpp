@@ -151,7 +151,18 @@ PrimitiveTessellation tessellateOnce(const Primitive& prim, const Level& lv, con
       }
       marchQuadricBox(sb, q, box, n);
     } else {
-      marchQuadricPiece(sb, q, region.box, region.planes, lv.target);
+      // At a budget the cells count along the region's box, or along the piece's exact
+      // extent (padded) when the level carries it (tessellateCovering's retry).
+      Eigen::AlignedBox3d box = region.box;
+      if (lv.bounds && lv.bounds->bounded && !lv.bounds->empty) {
+        Eigen::AlignedBox3d padded = lv.bounds->box;
+        const double pad = 0.05 * padded.sizes().maxCoeff();
+        padded.min().array() -= pad;
+        padded.max().array() += pad;
+        const Eigen::AlignedBox3d both = box.intersection(padded);
+        if (!both.isEmpty()) box = both;
+      }
+      marchQuadricPiece(sb, q, box, region.planes, lv.target);
     }
   }
   out.surface_triangles = out.mesh.size();
@@ -248,15 +259,52 @@ PrimitiveTessellation tessellateCovering(const Primitive& prim, const Level& lv,
   return t;
 }
 
-// At a triangle budget or a chord error the piece's extent is not needed up front: a piece
-// left with boundary defects is checked for emptiness, and an empty one draws nothing, as at
-// a pixel error.
+// How far the mesh strays outside `box`, in units of the box's largest side.
+double strayOutside(const TriangleMesh3& mesh, std::size_t surface, const Eigen::AlignedBox3d& box) {
+  double worst = 0;
+  for (std::size_t t = 0; t < std::min(surface, mesh.triangles.size()); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Vector3d& x = mesh.positions[std::size_t(mesh.triangles[t][std::size_t(k)])];
+      worst = std::max(worst, (box.min() - x).cwiseMax(x - box.max()).maxCoeff());
+    }
+  return worst / std::max(box.sizes().maxCoeff(), 1e-300);
+}
+
+// At a triangle budget or a chord error the piece's extent is not computed up front; a
+// marched piece is checked against it afterwards. Marching cells that count along the region's
+// box can be far larger than the piece across a thin slab of a cell (bspline_volume_g1 has
+// slabs 1e-4 thick that the surface crosses at a grazing angle): the cells' triangles, cut by
+// the slab's planes, then lie off the piece (up to 0.75 world units on that scene). Such a
+// piece is marched again in its exact extent, then with the cells halved up to three times,
+// until its surface vertices lie within a tenth of its size of that extent; the one that
+// strays least (with no more boundary defects) is kept. A marched piece, or one left with boundary defects, whose extent is empty draws
+// nothing, as at a pixel error (bspline_volume_g1 had marched pieces with no point inside their
+// region, their facets 0.05 world units off any surface).
 PrimitiveTessellation tessellateCovering(const Primitive& prim, int target, const Camera* camera, double aspect,
                                          int chordSamples) {
   Level lv;
   lv.target = target;
   PrimitiveTessellation t = tessellateCovering(prim, lv, camera, aspect, chordSamples);
-  if (t.boundary_defects > 0 && primitiveBounds(prim).empty) return PrimitiveTessellation{};
+  const bool marched = t.method == TessellationMethod::MarchingTetrahedra;
+  if (prim.clip.empty() || (!marched && t.boundary_defects == 0)) return t;
+  const PrimitiveBounds bounds = primitiveBounds(prim);
+  if (bounds.empty) return PrimitiveTessellation{};
+  if (!marched || !bounds.bounded) return t;
+  constexpr double kStray = 0.1;
+  double stray = strayOutside(t.mesh, t.surface_triangles, bounds.box);
+  Level exact = lv;
+  exact.bounds = &bounds;
+  for (int round = 0; round < 4 && stray > kStray; ++round) {
+    PrimitiveTessellation m = tessellateOnce(prim, exact, camera, aspect, true);
+    exact.target *= 4;  // cells halved
+    if (m.surface_triangles == 0) continue;
+    const double s = strayOutside(m.mesh, m.surface_triangles, bounds.box);
+    if (s < stray && m.boundary_defects <= t.boundary_defects) {
+      measureErrors(m, prim, nullptr, chordSamples);
+      t = std::move(m);
+      stray = s;
+    }
+  }
   return t;
 }
 

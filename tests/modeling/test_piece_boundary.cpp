@@ -75,6 +75,24 @@ Primitive pieceOf(const std::array<double, 16>& q, const std::vector<Eigen::Vect
   return p;
 }
 
+// The surface vertices of t more than a tenth of the extent's size outside it (each printed).
+std::size_t verticesOffThePiece(const PrimitiveTessellation& t, const Eigen::AlignedBox3d& extent,
+                                const std::string& what) {
+  Eigen::AlignedBox3d near = extent;
+  const double pad = 0.1 * extent.sizes().maxCoeff();
+  near.min().array() -= pad;
+  near.max().array() += pad;
+  std::size_t off = 0;
+  for (std::size_t k = 0; k < t.surface_triangles; ++k)
+    for (int j = 0; j < 3; ++j) {
+      const Eigen::Vector3d& x = t.mesh.positions[std::size_t(t.mesh.triangles[k][std::size_t(j)])];
+      if (near.contains(x)) continue;
+      ++off;
+      ADD_FAILURE() << what << ": vertex " << x.transpose() << " off the piece's extent";
+    }
+  return off;
+}
+
 }  // namespace
 
 // Two pieces of bspline_volume_g1 (the scene's primitives 19538 and 35980, their quadrics
@@ -134,16 +152,53 @@ TEST(PieceBoundary, ASliverLiesOnItsSurfaceWithinItsExtentAndAnEmptyPieceDrawsNo
     ASSERT_GT(t.surface_triangles, 0u) << what;
     // Within a tenth of its own size of its extent (a facet of a cell larger than the piece
     // lay 0.008 away, 13 times the piece's size).
-    Eigen::AlignedBox3d near = sb.box;
-    const double pad = 0.1 * sb.box.sizes().maxCoeff();
-    near.min().array() -= pad;
-    near.max().array() += pad;
-    for (std::size_t k = 0; k < t.surface_triangles; ++k)
-      for (int j = 0; j < 3; ++j) {
-        const Eigen::Vector3d& x = t.mesh.positions[std::size_t(t.mesh.triangles[k][std::size_t(j)])];
-        EXPECT_TRUE(near.contains(x)) << what << ": vertex " << x.transpose() << " away from the piece's extent";
-      }
+    EXPECT_EQ(verticesOffThePiece(t, sb.box, what), 0u);
     EXPECT_TRUE(inView.surelyInView(sliver, t.mesh, t.surface_triangles)) << what;
     EXPECT_EQ(tessellatePrimitive(empty, o, &s.camera, aspect, &view).mesh.size(), 0u) << what;
+  }
+}
+
+// At a triangle budget (no view: marching cells count along the region's box), two more pieces
+// of bspline_volume_g1 (primitives 40080 and 23746): a piece in a slab the surface crosses at a
+// grazing angle, whose facets lay 0.1 world units off the piece (chord error 0.75), and a piece
+// whose exact extent is empty but whose marched triangles, inside its region, lay 0.05 off any
+// surface. The first is now marched again in its extent until it lies there; the second draws
+// nothing.
+TEST(PieceBoundary, AtABudgetAPieceInAGrazedSlabLiesWithinItsExtentAndAnEmptyOneDrawsNothing) {
+  const Primitive grazed = pieceOf(
+      {0.00050856275103873549, 0.00078006811907523977, 9.1483687140811405e-05, -0.0006444719365879968,
+       0.00078006811907523977, 1, -0.78865351568144004, -0.90045393689157005,
+       9.1483687140811405e-05, -0.78865351568144004, 0.64165309824487116, 0.70861317050657135,
+       -0.0006444719365879968, -0.90045393689157005, 0.70861317050657135, 0.81026419796862292},
+      {{0, 0.45000000000000007, -0.3600000000000001, -0.40500000000000003},
+       {0, 1, 0, -1.2605241172155532},
+       {-0.57625887684858479, 0.65088598059275882, 0.061519801940097041, -0.71253519413298549},
+       {-0.02466701663336756, -0.053525167063663399, -0.5223682136915393, 0.087687855585505375},
+       {0.43962319236764891, 0, 0.062082461935326273, -0.13188695771029468},
+       {0.066400310971996737, -0.066400310971996737, -0.42867948833681524, 0.07968037316639609},
+       {-0.0010162478590737649, -0.59259775142804516, 0.47489119942969515, 0.53303310192751852}});
+  const Primitive empty = pieceOf(
+      {-1, 0.0067673064027591653, 0.8082658548918823, -0.90128239857138503,
+       0.0067673064027591653, 0.012652603568054987, -0.0095626368706716314, 0.014622232349464803,
+       0.8082658548918823, -0.0095626368706716314, -0.62958136350567473, 0.71937435365486901,
+       -0.90128239857138503, 0.014622232349464803, 0.71937435365486901, -0.80469430878335246},
+      {{0.44999999999999996, 0, -0.35999999999999999, 0.40499999999999997},
+       {0, 0, 1, -0.51052411721555324},
+       {0, -0.46219818626322279, -0.05653782447482289, -0.37357499928078336},
+       {0.1554098420873119, 0.40867099590800909, -0.41944497845895168, 0.50767275419578883},
+       {-0.5499758331362814, 0, 0.44131696517743441, -0.49598047382396016}});
+  const PrimitiveBounds gb = primitiveBounds(grazed);
+  ASSERT_TRUE(gb.bounded && !gb.empty);
+  ASSERT_TRUE(primitiveBounds(empty).empty);
+  for (int triangles : {64, 128}) {
+    TessellationOptions o;
+    o.triangles = triangles;
+    const PrimitiveTessellation t = tessellatePrimitive(grazed, o);
+    ASSERT_GT(t.surface_triangles, 0u) << triangles;
+    EXPECT_EQ(t.boundary_defects, 0u) << triangles;
+    EXPECT_EQ(verticesOffThePiece(t, gb.box, std::to_string(triangles) + " triangles"), 0u);
+    // The piece is 0.22 across: its facets within a thousandth of that of its surface.
+    EXPECT_LT(t.max_chord_error, 2e-4) << triangles;
+    EXPECT_EQ(tessellatePrimitive(empty, o).mesh.size(), 0u) << triangles;
   }
 }

@@ -88,7 +88,7 @@ struct SceneCase {
   bool shares;  // has pieces on both sides of a clip plane (macropatch_bezier's cells do not)
   bool closed;  // a closed surface: no open edge at all
   bool heavy;   // a minute or more under the sanitizers: left to the Release suite
-  // Closed at a fixed count (64 triangles a piece) too; when not, that count is not checked.
+  // Closed at a fixed count (64 triangles a piece) too; when not, that count is printed only.
   bool fixed_count_closed = true;
 };
 
@@ -137,11 +137,13 @@ TEST_P(SharedBoundaryScene, EveryInteriorEdgeIsUsedTwiceWithinTheTolerance) {
     EXPECT_EQ(c.degenerate, 0u) << "eps " << eps;
     if (sc.closed) { EXPECT_TRUE(isWatertight(mesh)) << "eps " << eps << ": " << c.open << " open edges"; }
   }
-  if (!sc.fixed_count_closed) return;
   TessellationOptions o;
   o.triangles = 64;
   const TriangleMesh3 mesh = tessellateScene(s, o);
   const Cracks c = cracks(s, mesh);
+  std::printf("%s level 64: %zu triangles, %zu open edges on shared planes, %zu used more than twice\n", sc.file,
+              mesh.size(), c.open_on_shared, c.overused);
+  if (!sc.fixed_count_closed) return;
   EXPECT_EQ(c.open_on_shared, 0u) << "level 64: " << c.open << " open edges";
   EXPECT_EQ(c.overused, 0u) << "level 64";
 }
@@ -158,8 +160,7 @@ INSTANTIATE_TEST_SUITE_P(SharedBoundaries, SharedBoundaryScene,
                          caseName);
 
 // bspline_volume_g1 (41 839 pieces; 75 s a tolerance in Release, so out of the suite: run it
-// with --gtest_also_run_disabled_tests). Watertight at 2 and 0.5 px; not at a fixed count,
-// where pieces in slabs thinner than their marching cells get facets off the piece
-// (docs/COMPARE.md "Shared boundaries").
+// with --gtest_also_run_disabled_tests). Watertight at 2 and 0.5 px; not yet at a fixed count
+// (17 open edges at a corner of pieces 1e-5 across: docs/COMPARE.md "Shared boundaries").
 INSTANTIATE_TEST_SUITE_P(DISABLED_Volume, SharedBoundaryScene,
                          ::testing::Values(SceneCase{"bspline_volume_g1.json", true, true, true, false}), caseName);
