@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -277,17 +278,20 @@ double strayOutside(const TriangleMesh3& mesh, std::size_t surface, const Eigen:
 // the slab's planes, then lie off the piece (up to 0.75 world units on that scene). Such a
 // piece is marched again in its exact extent, then with the cells halved up to three times,
 // until its surface vertices lie within a tenth of its size of that extent; the one that
-// strays least (with no more boundary defects) is kept. A marched piece, or one left with boundary defects, whose extent is empty draws
-// nothing, as at a pixel error (bspline_volume_g1 had marched pieces with no point inside their
-// region, their facets 0.05 world units off any surface).
+// strays least (with no more boundary defects) is kept. A marched piece, or one left with
+// boundary defects, whose extent is empty draws nothing, as at a pixel error
+// (bspline_volume_g1 had marched pieces with no point inside their region, their facets 0.05
+// world units off any surface). `extent` keeps the piece's extent across calls for the same
+// piece (the chord-error loop), computed the first time it is needed.
 PrimitiveTessellation tessellateCovering(const Primitive& prim, int target, const Camera* camera, double aspect,
-                                         int chordSamples) {
+                                         int chordSamples, std::optional<PrimitiveBounds>& extent) {
   Level lv;
   lv.target = target;
   PrimitiveTessellation t = tessellateCovering(prim, lv, camera, aspect, chordSamples);
   const bool marched = t.method == TessellationMethod::MarchingTetrahedra;
   if (prim.clip.empty() || (!marched && t.boundary_defects == 0)) return t;
-  const PrimitiveBounds bounds = primitiveBounds(prim);
+  if (!extent) extent = primitiveBounds(prim);
+  const PrimitiveBounds& bounds = *extent;
   if (bounds.empty) return PrimitiveTessellation{};
   if (!marched || !bounds.bounded) return t;
   constexpr double kStray = 0.1;
@@ -371,14 +375,15 @@ PrimitiveTessellation tessellatePrimitive(const Primitive& prim, const Tessellat
     if (!view) throw std::invalid_argument("tessellation: pixel_error needs the scene's view");
     return tessellateToPixels(prim, options, camera, aspect, *view);
   }
+  std::optional<PrimitiveBounds> extent;  // computed once, when a try needs it
   if (options.chord_error <= 0)
-    return tessellateCovering(prim, std::max(2, options.triangles), camera, aspect, options.chord_samples);
+    return tessellateCovering(prim, std::max(2, options.triangles), camera, aspect, options.chord_samples, extent);
   int target = 8;
-  PrimitiveTessellation t = tessellateCovering(prim, target, camera, aspect, options.chord_samples);
+  PrimitiveTessellation t = tessellateCovering(prim, target, camera, aspect, options.chord_samples, extent);
   while (t.max_chord_error > options.chord_error && t.method != TessellationMethod::Planar &&
          t.method != TessellationMethod::Empty && target * 2 <= options.max_triangles) {
     target *= 2;
-    t = tessellateCovering(prim, target, camera, aspect, options.chord_samples);
+    t = tessellateCovering(prim, target, camera, aspect, options.chord_samples, extent);
   }
   return t;
 }
