@@ -119,20 +119,6 @@ std::vector<Segment> undoubledSegments(const std::vector<std::vector<Vector3d>>&
   return out;
 }
 
-// Distance from x to the nearest segment of the polylines.
-double distanceToSegments(const Vector3d& x, const std::vector<std::vector<Vector3d>>& polylines) {
-  double best = 1e300;
-  for (const auto& line : polylines)
-    for (std::size_t i = 0; i < line.size(); ++i) {
-      const Vector3d& a = line[i];
-      const Vector3d& b = line[std::min(i + 1, line.size() - 1)];
-      const Vector3d d = b - a;
-      const double len2 = d.squaredNorm();
-      const double t = len2 > 0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-      best = std::min(best, (x - (a + t * d)).norm());
-    }
-  return best;
-}
 
 // Cumulative arc length of a path, as fractions of its length (by index when it has none).
 std::vector<double> arcFractions(const std::vector<Vector3d>& p) {
@@ -676,6 +662,20 @@ std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
 }
 
 }  // namespace
+
+double distanceToSegments(const Vector3d& x, const std::vector<std::vector<Vector3d>>& polylines) {
+  double best = 1e300;
+  for (const auto& line : polylines)
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const Vector3d& a = line[i];
+      const Vector3d& b = line[std::min(i + 1, line.size() - 1)];
+      const Vector3d d = b - a;
+      const double len2 = d.squaredNorm();
+      const double t = len2 > 0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+      best = std::min(best, (x - (a + t * d)).norm());
+    }
+  return best;
+}
 
 bool zipBoundaryStrip(TriangleMesh3& mesh, std::size_t& surface, const std::vector<HalfSpace>& sharedPlanes,
                       const std::vector<std::vector<Vector3d>>& polylines, const Quadric& q,

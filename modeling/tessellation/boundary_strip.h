@@ -62,6 +62,9 @@ constexpr int kStripRefinements = 24;
 // flat piece's chord error of 0, would not stop it).
 constexpr std::size_t kStripGrowth = 16;
 
+// Distance from x to the nearest segment of the polylines.
+double distanceToSegments(const Eigen::Vector3d& x, const std::vector<std::vector<Eigen::Vector3d>>& polylines);
+
 // False, with the mesh unchanged, when no way closes the strip, not even from nothing kept (a
 // junction of more than two, a loop that does not close, holds no polyline or is longer than
 // kMaxLoopPoints).

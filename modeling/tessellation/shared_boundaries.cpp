@@ -97,6 +97,20 @@ void snapEnds(std::vector<Pair>& pairs) {
   for (std::size_t m = 0; m < pts.size(); ++m) *pts[m] = least[std::size_t(findRoot(parent, int(m)))];
 }
 
+// Two samplings of one arc: the same ends, and every vertex of each within 1 % of the chord
+// of the other (two different arcs between the same ends lie about a chord apart).
+bool sameArc(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b) {
+  if (a == b) return true;
+  if (a.empty() || b.empty() || a.front() != b.front() || a.back() != b.back()) return false;
+  const double within = 1e-2 * (a.back() - a.front()).norm();
+  const std::vector<std::vector<Vector3d>> la{a}, lb{b};
+  for (const Vector3d& x : a)
+    if (distanceToSegments(x, lb) > within) return false;
+  for (const Vector3d& x : b)
+    if (distanceToSegments(x, la) > within) return false;
+  return true;
+}
+
 }  // namespace
 
 StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const std::vector<TriangleMesh3*>& meshes,
@@ -202,13 +216,22 @@ StitchReport stitchSharedBoundaries(const std::vector<Primitive>& prims, const s
       if (std::none_of(pl.begin(), pl.end(), [&](const HalfSpace& x) { return x.p == h.p; })) pl.push_back(h);
       // The piece's side of a plane is one boundary: an arc that two pieces across it both
       // end on (they overlap there, within the rounding of their corners) is drawn once.
+      // At a budget the two pairs sample it to their own chord errors, so the two polylines
+      // can differ: the finer one is kept. Where this was traced (bspline_volume_g1, piece
+      // 2792) the finer one is the sampling of the small piece that holds the arc; the larger
+      // one reaches the arc only at a corner and leaves it out of its own boundary as a spur
+      // (boundary_strip.h).
       auto& mine = linePlanes[std::size_t(i)];
-      bool seen = false;
-      for (std::size_t l = 0; l < mine.size() && !seen; ++l)
-        seen = mine[l] == k && lines[std::size_t(i)][l] == p.polyline;
-      if (seen) continue;
+      auto& have = lines[std::size_t(i)];
+      int same = -1;
+      for (std::size_t l = 0; l < mine.size() && same < 0; ++l)
+        if (mine[l] == k && sameArc(have[l], p.polyline)) same = int(l);
+      if (same >= 0) {
+        if (p.polyline.size() > have[std::size_t(same)].size()) have[std::size_t(same)] = p.polyline;
+        continue;
+      }
       mine.push_back(k);
-      lines[std::size_t(i)].push_back(p.polyline);
+      have.push_back(p.polyline);
     }
   }
   for (const auto& [key, g] : groups)

@@ -14,8 +14,9 @@
 //     view, else the finer of the two pieces' measured chord errors);
 //  4. each piece's triangles touching its shared planes removed and the strip to those
 //     polylines triangulated again (boundary_strip.h); an arc that two pieces across one
-//     plane both end on, sampled to the same points (they overlap there within the rounding
-//     of their corners), counts once on this side.
+//     plane both end on (they overlap there within the rounding of their corners) counts once
+//     on this side: when the two pairs sampled it differently (at a budget, each to its own
+//     pieces' chord errors), the finer sampling.
 // Both sides then carry the same vertices, bit for bit, on every shared boundary: each edge
 // of it is used by exactly two triangles. A plane where an arc's sampling fails is left as
 // each piece made it, for all the pieces on it; so is a piece whose strip cannot be closed

@@ -16,6 +16,7 @@
 #include "modeling/tessellation/piece_in_view.h"
 #include "modeling/tessellation/screen_error.h"
 #include "modeling/tessellation/tessellation.h"
+#include "tests/modeling/piece_of.h"
 #include "tests/sanitized_build.h"
 
 using namespace qacc;
@@ -68,12 +69,7 @@ TEST(PieceBoundary, FindsVerticesOutsideAndOpenEdgesOffThePlanes) {
 
 namespace {
 
-Primitive pieceOf(const std::array<double, 16>& q, const std::vector<Eigen::Vector4d>& planes) {
-  Primitive p;
-  p.quadric = Quadric(Eigen::Map<const Eigen::Matrix4d>(q.data()));
-  for (const auto& h : planes) p.clip.emplace_back(h);
-  return p;
-}
+using test::pieceOf;
 
 // The surface vertices of t more than a tenth of the extent's size outside it (each printed).
 std::size_t verticesOffThePiece(const PrimitiveTessellation& t, const Eigen::AlignedBox3d& extent,
