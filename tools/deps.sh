@@ -2,6 +2,7 @@
 # missing (as root: apt-get update, then apt-get install -y). Safe to call repeatedly.
 QACC_PACKAGES=(
   g++ make cmake pkg-config          # toolchain (OpenMP comes with g++: libgomp)
+  ninja-build                        # tools/test's builds (ninja overlaps the layers' libraries; make builds them one by one)
   clang libclang-rt-dev libomp-dev   # the sanitized and fuzz builds (ASan, UBSan, libFuzzer, clang's OpenMP)
   libeigen3-dev                      # linear algebra
   libpng-dev                         # images
