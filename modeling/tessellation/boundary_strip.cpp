@@ -119,7 +119,6 @@ std::vector<Segment> undoubledSegments(const std::vector<std::vector<Vector3d>>&
   return out;
 }
 
-
 // Cumulative arc length of a path, as fractions of its length (by index when it has none).
 std::vector<double> arcFractions(const std::vector<Vector3d>& p) {
   std::vector<double> f(p.size(), 0.0);
