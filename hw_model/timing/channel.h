@@ -4,8 +4,10 @@
 // for the stages inside a pipelined unit) counted at the start of the cycle: a slot freed
 // by a receive during cycle t can be refilled from t + 1, so the order in which units
 // tick within a cycle does not matter. Channels are made by a ChannelRegistry
-// (channel_registry.h), which holds the current cycle and commits every channel at the
-// end of it.
+// (channel_registry.h), which holds the current cycle. A channel commits itself lazily: its
+// first send or receive of a cycle starts the cycle's counts (the occupancy at the start of
+// the cycle is the occupancy after the last cycle that touched it), and it tells the
+// registry that something moved, so no per-cycle commit pass over the channels is needed.
 #pragma once
 #include <cassert>
 #include <cstddef>
@@ -21,8 +23,6 @@ namespace qacc {
 class ChannelBase {
  public:
   virtual ~ChannelBase() = default;
-  // End of cycle; true when anything was sent or received during it.
-  virtual bool commit() = 0;
   // Nothing sent and not yet received.
   virtual bool idle() const = 0;
 };
@@ -32,18 +32,21 @@ class Channel : public ChannelBase {
  public:
   static constexpr std::uint64_t kNever = std::numeric_limits<std::uint64_t>::max();
 
-  // `touched`: where the channel enters itself on its first send or receive of a cycle, so
-  // that the registry commits only the channels a cycle used (null: never entered).
-  Channel(const std::uint64_t& now, std::size_t capacity, std::vector<ChannelBase*>* touched = nullptr)
-      : now_(now), capacity_(capacity), touched_(touched) {}
-  // Sender: room for one more this cycle?
-  bool canSend() const { return capacity_ == 0 || atStart_ + sent_ < capacity_; }
+  // `moves`: the registry's count of sends and receives in the current cycle.
+  Channel(const std::uint64_t& now, std::size_t capacity, std::uint64_t& moves)
+      : now_(now), capacity_(capacity), moves_(moves) {}
+  // Sender: room for one more this cycle? (The occupancy at the start of the cycle plus what
+  // was sent during it; a receive frees its slot from the next cycle.)
+  bool canSend() const {
+    if (capacity_ == 0) return true;
+    return cycle_ == now_ ? atStart_ + sent_ < capacity_ : q_.size() < capacity_;
+  }
   void send(const T& v, std::uint64_t delay = 1) {
     assert(delay >= 1 && canSend());
     const std::uint64_t arrival = now_ + delay;
     assert(q_.empty() || q_.back().arrival <= arrival);  // items leave in order
-    q_.push_back({arrival, v});
     touch();
+    q_.push_back({arrival, v});
     ++sent_;
   }
   // Receiver: the oldest item, once it has arrived.
@@ -51,9 +54,8 @@ class Channel : public ChannelBase {
   const T& front() const { return q_.front().item; }
   void receive() {
     assert(ready());
-    q_.pop_front();
     touch();
-    ++received_;
+    q_.pop_front();
   }
   // Cycle at which the oldest item arrives (kNever when the channel is empty).
   std::uint64_t nextArrival() const { return q_.empty() ? kNever : q_.front().arrival; }
@@ -61,12 +63,6 @@ class Channel : public ChannelBase {
   std::size_t size() const { return q_.size(); }
   std::size_t capacity() const { return capacity_; }
 
-  bool commit() override {
-    const bool changed = sent_ > 0 || received_ > 0;
-    sent_ = received_ = 0;
-    atStart_ = q_.size();
-    return changed;
-  }
   bool idle() const override { return q_.empty(); }
 
  private:
@@ -74,14 +70,21 @@ class Channel : public ChannelBase {
     std::uint64_t arrival;
     T item;
   };
+  // Every send or receive: the first of a cycle starts the cycle's counts.
   void touch() {
-    if (touched_ && sent_ == 0 && received_ == 0) touched_->push_back(this);
+    if (cycle_ != now_) {
+      cycle_ = now_;
+      atStart_ = q_.size();
+      sent_ = 0;
+    }
+    ++moves_;
   }
   const std::uint64_t& now_;
   std::size_t capacity_;
-  std::vector<ChannelBase*>* touched_;
+  std::uint64_t& moves_;
   DelayQueue<Entry> q_;
-  std::size_t atStart_ = 0, sent_ = 0, received_ = 0;
+  std::uint64_t cycle_ = kNever;  // the cycle atStart_ and sent_ belong to
+  std::size_t atStart_ = 0, sent_ = 0;
 };
 
 }  // namespace qacc

@@ -1,8 +1,8 @@
 // ChannelRegistry: the clock of the cycle engine and every channel of the machine. Units
-// are wired in one place (engines/cycle_engine.cpp) with channels the registry makes; at
-// the end of each cycle endCycle() commits every channel the cycle used (two-phase: the tick order of
-// the units within a cycle does not matter), and idle() says whether anything is still
-// on a wire.
+// are wired in one place (engines/cycle_engine.cpp) with channels the registry makes; each
+// channel keeps its own two-phase state (channel.h: the tick order of the units within a
+// cycle does not matter) and counts its moves here, so endCycle() only advances the clock
+// and says whether anything moved; idle() says whether anything is still on a wire.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -19,18 +19,16 @@ class ChannelRegistry {
   // Capacity 0: unbounded (the stages inside a pipelined unit).
   template <typename T>
   Channel<T>& make(std::size_t capacity) {
-    auto c = std::make_unique<Channel<T>>(now_, capacity, &touched_);
+    auto c = std::make_unique<Channel<T>>(now_, capacity, moves_);
     Channel<T>& ref = *c;
     channels_.push_back(std::move(c));
     return ref;
   }
-  // End of the cycle: commits every channel, then the clock advances. True when anything
-  // was sent or received during the cycle.
+  // End of the cycle: the clock advances. True when anything was sent or received during
+  // the cycle.
   bool endCycle() {
-    // Only the channels this cycle sent on or received from have anything to commit.
-    const bool changed = !touched_.empty();
-    for (ChannelBase* c : touched_) c->commit();
-    touched_.clear();
+    const bool changed = moves_ != 0;
+    moves_ = 0;
     ++now_;
     return changed;
   }
@@ -48,7 +46,7 @@ class ChannelRegistry {
  private:
   std::uint64_t now_ = 0;
   std::vector<std::unique_ptr<ChannelBase>> channels_;
-  std::vector<ChannelBase*> touched_;  // channels sent on or received from this cycle
+  std::uint64_t moves_ = 0;  // sends and receives in the current cycle
 };
 
 }  // namespace qacc

@@ -19,7 +19,7 @@
 
 namespace qacc {
 
-class CsgIntervalPipelineUnit : public Unit {
+class CsgIntervalPipelineUnit final : public Unit {
  public:
   struct Params {
     int latency = 0;

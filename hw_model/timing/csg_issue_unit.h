@@ -20,7 +20,7 @@
 
 namespace qacc {
 
-class CsgIssueUnit : public Unit {
+class CsgIssueUnit final : public Unit {
  public:
   struct Params {
     int pipelines = 2;

@@ -16,7 +16,7 @@
 
 namespace qacc {
 
-class CsgListUnit : public Unit {
+class CsgListUnit final : public Unit {
  public:
   CsgListUnit(const std::vector<CsgJob>& jobs, std::vector<Channel<CsgToken>*> in, Channel<int>& toSweep)
       : Unit("csg_list"), jobs_(jobs), in_(std::move(in)), out_(toSweep), busyUntil_(in_.size(), 0),

@@ -32,7 +32,7 @@ bool CsgSweepUnit::tick(std::uint64_t now) {
           finished = false;
           continue;
         }
-        out_[p]->send({s.prim, s.x, s.y, s.cap, s.z});
+        out_[p]->send({s.prim, s.x, s.y, s.cap, std::int64_t(s.z)});
       }
       current_[p] = -1;
       changed = true;

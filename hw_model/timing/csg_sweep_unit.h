@@ -17,7 +17,7 @@
 
 namespace qacc {
 
-class CsgSweepUnit : public Unit {
+class CsgSweepUnit final : public Unit {
  public:
   // The pixels' pipelines: the traversal's interleave, which the list ports follow.
   using Params = TraversalUnit::Params;

@@ -20,7 +20,7 @@
 
 namespace qacc {
 
-class HierarchicalZUnit : public Unit {
+class HierarchicalZUnit final : public Unit {
  public:
   struct Params {
     int tile_size = 16;

@@ -12,7 +12,7 @@
 
 namespace qacc {
 
-class HostInterfaceUnit : public Unit {
+class HostInterfaceUnit final : public Unit {
  public:
   struct Params {
     int bus_width_bits = 32;

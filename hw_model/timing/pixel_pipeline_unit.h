@@ -17,7 +17,7 @@
 
 namespace qacc {
 
-class PixelPipelineUnit : public Unit {
+class PixelPipelineUnit final : public Unit {
  public:
   struct Params {
     int latency = 0;  // cycles from a pixel's entry to its result

@@ -17,7 +17,7 @@
 
 namespace qacc {
 
-class SetupUnit : public Unit {
+class SetupUnit final : public Unit {
  public:
   struct Params {
     int mad_units = 4;

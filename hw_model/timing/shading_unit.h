@@ -15,7 +15,7 @@
 
 namespace qacc {
 
-class ShadingUnit : public Unit {
+class ShadingUnit final : public Unit {
  public:
   struct Params {
     int cycles_per_pixel = 1;  // initiation interval

@@ -24,7 +24,7 @@ struct PointToken {
   int prim = 0;
   int x = 0, y = 0;
   int cap = -1;  // cap plane, -1 for a surface point
-  i128 z = 0;    // depth, internal format
+  std::int64_t z = 0;  // depth, internal format (0 <= z <= 2^depth_frac_bits, depth_frac_bits <= 36)
 };
 
 }  // namespace qacc

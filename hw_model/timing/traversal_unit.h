@@ -21,7 +21,7 @@ namespace qacc {
 struct PixelTrace;
 class HierarchicalZUnit;
 
-class TraversalUnit : public Unit {
+class TraversalUnit final : public Unit {
  public:
   struct Params {
     int pipelines = 2;

@@ -11,15 +11,16 @@ ZBufferUnit::ZBufferUnit(const Params& p, const HwConfig& cfg, ChannelRegistry& 
                          PixelCounters& px)
     : Unit("zbuffer"), p_(p), cfg_(cfg), zb_(zb), in_(std::move(in)), out_(std::move(out)), px_(px),
       bankFree_(std::size_t(p.banks), 0) {
-  for (std::size_t i = 0; i < in_.size(); ++i)
-    reads_.push_back(std::make_unique<Pipeline<InFlight>>(wires, std::uint64_t(p.read_latency)));
+  if (p.banks > 0 && (p.banks & (p.banks - 1)) == 0) bankMask_ = p.banks - 1;
+  reads_.reserve(in_.size());
+  for (std::size_t i = 0; i < in_.size(); ++i) reads_.emplace_back(wires, std::uint64_t(p.read_latency));
 }
 
 bool ZBufferUnit::tick(std::uint64_t now) {
   bool changed = false, stalled = false;
   const std::size_t P = in_.size();
   for (std::size_t p = 0; p < P; ++p) {
-    Pipeline<InFlight>& q = *reads_[p];
+    Pipeline<InFlight>& q = reads_[p];
     while (q.done()) {
       if (q.front().pass) {
         if (!out_[p]->canSend()) {
@@ -34,11 +35,11 @@ bool ZBufferUnit::tick(std::uint64_t now) {
   }
   // Issue: one request per pipeline, round-robin priority on bank conflicts.
   for (std::size_t k = 0; k < P; ++k) {
-    const std::size_t p = (rr_ + k) % P;
+    const std::size_t p = rr_ + k < P ? rr_ + k : rr_ + k - P;
     Channel<PointToken>& in = *in_[p];
     if (!in.ready()) continue;
     const PointToken& r = in.front();
-    const int bank = ZBufferMemory::bankOf(r.x, r.y, p_.banks);
+    const int bank = bankOf(r.x, r.y);
     if (bankFree_[std::size_t(bank)] > now) {
       ++conflicts_;
       stalled = true;
@@ -52,12 +53,12 @@ bool ZBufferUnit::tick(std::uint64_t now) {
     if (pass && hiz_) hiz_->noteWrite(now, r.x, r.y, stored);
     if (pass) ++px_.written;
     else ++px_.depth_rejected;
-    reads_[p]->accept({pass, r});
+    reads_[p].accept({pass, r});
     in.receive();
     countItem();
     changed = true;
   }
-  rr_ = (rr_ + 1) % P;
+  if (++rr_ == P) rr_ = 0;
   countCycle(changed, stalled, holdsWork());
   return changed;
 }
@@ -65,10 +66,10 @@ bool ZBufferUnit::tick(std::uint64_t now) {
 std::uint64_t ZBufferUnit::nextEvent() const {
   std::uint64_t t = Unit::nextEvent();
   for (std::size_t p = 0; p < in_.size(); ++p) {
-    t = std::min(t, reads_[p]->nextEvent(false));
+    t = std::min(t, reads_[p].nextEvent(false));
     if (in_[p]->ready()) {
       const PointToken& r = in_[p]->front();
-      t = std::min(t, bankFree_[std::size_t(ZBufferMemory::bankOf(r.x, r.y, p_.banks))]);
+      t = std::min(t, bankFree_[std::size_t(bankOf(r.x, r.y))]);
     }
   }
   return t;
@@ -76,7 +77,7 @@ std::uint64_t ZBufferUnit::nextEvent() const {
 
 bool ZBufferUnit::holdsWork() const {
   for (const auto& q : reads_)
-    if (q->holdsWork()) return true;
+    if (q.holdsWork()) return true;
   return false;
 }
 

@@ -7,7 +7,6 @@
 // in order, and a pixel always goes through the same pipeline, so the Z test sees every
 // pixel's primitives in scene order. Pixels that pass go to that pipeline's shading unit.
 #pragma once
-#include <memory>
 #include <vector>
 
 #include "hw_model/config/hw_config.h"
@@ -21,7 +20,7 @@ namespace qacc {
 
 class HierarchicalZUnit;
 
-class ZBufferUnit : public Unit {
+class ZBufferUnit final : public Unit {
  public:
   struct Params {
     int banks = 4;
@@ -54,8 +53,10 @@ class ZBufferUnit : public Unit {
   ZBufferMemory& zb_;
   std::vector<Channel<PointToken>*> in_, out_;
   PixelCounters& px_;
+  int bankOf(int x, int y) const { return bankMask_ >= 0 ? (x + y) & bankMask_ : ZBufferMemory::bankOf(x, y, p_.banks); }
   std::vector<std::uint64_t> bankFree_;
-  std::vector<std::unique_ptr<Pipeline<InFlight>>> reads_;  // per pipeline port
+  int bankMask_ = -1;  // banks - 1 when the bank count is a power of two (the same bank as the modulo)
+  std::vector<Pipeline<InFlight>> reads_;  // per pipeline port
   std::uint64_t conflicts_ = 0;
   std::size_t rr_ = 0;
   bool sceneOrderTies_ = false;

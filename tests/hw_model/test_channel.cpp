@@ -60,6 +60,29 @@ TEST(Channel, CapacityIsCountedAtTheStartOfTheCycle) {
   EXPECT_FALSE(c.canSend());
 }
 
+TEST(Channel, OccupancyCarriesOverCyclesWithoutTrafficAndAFastForward) {
+  // A channel keeps its two-phase state itself: after cycles in which nobody touched it (and
+  // a jump of the clock), the occupancy at the start of the cycle is what it held.
+  ChannelRegistry wires;
+  Channel<int>& c = wires.make<int>(2);
+  Channel<int>& other = wires.make<int>(2);
+  c.send(1);
+  c.send(2);
+  wires.endCycle();
+  other.send(9);  // traffic elsewhere does not change c's counts
+  EXPECT_TRUE(wires.endCycle());
+  EXPECT_FALSE(wires.endCycle());
+  wires.skipTo(50);
+  EXPECT_FALSE(c.canSend()) << "still full in cycle 50";
+  c.receive();
+  EXPECT_FALSE(c.canSend()) << "the slot freed in cycle 50 is free from cycle 51";
+  EXPECT_TRUE(wires.endCycle());
+  wires.skipTo(60);
+  EXPECT_TRUE(c.canSend());
+  c.send(3);
+  EXPECT_FALSE(c.canSend()) << "one held and one sent fill a channel of two";
+}
+
 TEST(Channel, BackPressureStallsAProducerAndLosesNothing) {
   // A producer sends one item per cycle into a channel of 2; the consumer takes one every
   // third cycle. Every item arrives once, in order, and the producer waits when it is full.

@@ -73,7 +73,7 @@ struct ZHarness {
   }
 };
 
-PointToken point(int prim, int x, int y, std::int64_t z) { return {prim, x, y, -1, i128(z) << 8}; }
+PointToken point(int prim, int x, int y, std::int64_t z) { return {prim, x, y, -1, z * 256}; }
 
 }  // namespace
 
@@ -116,4 +116,19 @@ TEST(ZBufferUnit, APortsRequestsAreTestedInOrderAndOnlyPassingPixelsGoOn) {
   EXPECT_EQ(h.px.depth_rejected, 1u);
   EXPECT_EQ(h.zb.px[h.zb.index(2, 2)].prim, 1);
   EXPECT_FALSE(h.unit->holdsWork());
+}
+
+TEST(ZBufferUnit, ABankCountThatIsNotAPowerOfTwoMapsPixelsByTheModulo) {
+  ZHarness h(3);
+  // (1, 2) and (2, 1) live in bank (x + y) mod 3 = 0 and wait for each other; (1, 2) and
+  // (0, 2) (bank 2) would not, though their sums agree in the low bits (3 and 2 AND 2).
+  const auto same = h.run({{0, 0, point(0, 1, 2, 1000)}, {0, 1, point(1, 2, 1, 1000)}}, 20);
+  ASSERT_EQ(same[0].size() + same[1].size(), 2u);
+  EXPECT_EQ(h.unit->conflicts(), 2u);
+  ZHarness g(3);
+  const auto apart = g.run({{0, 0, point(0, 1, 2, 1000)}, {0, 1, point(1, 0, 2, 1000)}}, 20);
+  ASSERT_EQ(apart[0].size(), 1u);
+  ASSERT_EQ(apart[1].size(), 1u);
+  EXPECT_EQ(apart[0][0].first, apart[1][0].first);
+  EXPECT_EQ(g.unit->conflicts(), 0u);
 }
