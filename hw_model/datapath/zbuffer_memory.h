@@ -54,7 +54,11 @@ struct ZBufferMemory {
     const i128 top = (i128(1) << cfg.zbuffer_bits) - 1;
     return std::uint32_t(v < 0 ? 0 : (v > top ? top : v));
   }
-  static int bankOf(int x, int y, int banks) { return (x + y) % banks; }
+  // (x + y >= 0: for a power-of-two bank count the mask is the same bank as the modulo,
+  // without the host's divide.)
+  static int bankOf(int x, int y, int banks) {
+    return (banks & (banks - 1)) == 0 ? (x + y) & (banks - 1) : (x + y) % banks;
+  }
 };
 
 }  // namespace qacc

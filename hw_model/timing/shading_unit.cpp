@@ -11,7 +11,7 @@ bool ShadingUnit::tick(std::uint64_t now) {
     changed = true;
   }
   if (stages_.canAccept() && in_.ready()) {
-    stages_.accept(in_.front(), std::uint64_t(p_.cycles_per_pixel));
+    stages_.accept({}, std::uint64_t(p_.cycles_per_pixel));
     in_.receive();
     countItem();
     changed = true;

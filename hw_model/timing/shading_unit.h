@@ -31,9 +31,12 @@ class ShadingUnit final : public Unit {
   std::uint64_t delivered() const { return delivered_; }
 
  private:
+  // A pixel in the stages: its colour is the resolve's (a pure function of the final
+  // winners), so the stages keep only when each pixel finishes.
+  struct InFlight {};
   Params p_;
   Channel<PointToken>& in_;
-  Pipeline<PointToken> stages_;
+  Pipeline<InFlight> stages_;
   std::uint64_t delivered_ = 0;
 };
 

@@ -26,7 +26,10 @@ class TraversalUnit final : public Unit {
   struct Params {
     int pipelines = 2;
     static Params from(const HwConfig& cfg) { return {cfg.pipelines}; }
-    int pipelineOf(int x, int y) const { return (x + y) % pipelines; }
+    // (x + y >= 0: for a power-of-two count the mask is the modulo, without a divide.)
+    int pipelineOf(int x, int y) const {
+      return (pipelines & (pipelines - 1)) == 0 ? (x + y) & (pipelines - 1) : (x + y) % pipelines;
+    }
   };
 
   // The rows' spans come from the PixelTrace (the same span solver, run beforehand).

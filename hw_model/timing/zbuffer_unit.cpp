@@ -11,7 +11,6 @@ ZBufferUnit::ZBufferUnit(const Params& p, const HwConfig& cfg, ChannelRegistry& 
                          PixelCounters& px)
     : Unit("zbuffer"), p_(p), cfg_(cfg), zb_(zb), in_(std::move(in)), out_(std::move(out)), px_(px),
       bankFree_(std::size_t(p.banks), 0) {
-  if (p.banks > 0 && (p.banks & (p.banks - 1)) == 0) bankMask_ = p.banks - 1;
   reads_.reserve(in_.size());
   for (std::size_t i = 0; i < in_.size(); ++i) reads_.emplace_back(wires, std::uint64_t(p.read_latency));
 }

@@ -53,9 +53,8 @@ class ZBufferUnit final : public Unit {
   ZBufferMemory& zb_;
   std::vector<Channel<PointToken>*> in_, out_;
   PixelCounters& px_;
-  int bankOf(int x, int y) const { return bankMask_ >= 0 ? (x + y) & bankMask_ : ZBufferMemory::bankOf(x, y, p_.banks); }
+  int bankOf(int x, int y) const { return ZBufferMemory::bankOf(x, y, p_.banks); }
   std::vector<std::uint64_t> bankFree_;
-  int bankMask_ = -1;  // banks - 1 when the bank count is a power of two (the same bank as the modulo)
   std::vector<Pipeline<InFlight>> reads_;  // per pipeline port
   std::uint64_t conflicts_ = 0;
   std::size_t rr_ = 0;
