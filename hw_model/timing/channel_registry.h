@@ -16,6 +16,8 @@ namespace qacc {
 class ChannelRegistry {
  public:
   std::uint64_t now() const { return now_; }
+  // The clock itself, for what reads it every cycle (channels, a unit's pipeline stages).
+  const std::uint64_t& clock() const { return now_; }
   // Capacity 0: unbounded (the stages inside a pipelined unit).
   template <typename T>
   Channel<T>& make(std::size_t capacity) {

@@ -14,6 +14,8 @@ class DelayQueue {
   DelayQueue() : ring_(new T[kInitial]), mask_(kInitial - 1) {}
   DelayQueue(const DelayQueue&) = delete;
   DelayQueue& operator=(const DelayQueue&) = delete;
+  DelayQueue(DelayQueue&&) noexcept = default;
+  DelayQueue& operator=(DelayQueue&&) noexcept = default;
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
   T& front() { return ring_[head_]; }

@@ -1,46 +1,53 @@
 // Pipeline<T>: the in-order stages of a pipelined unit — it accepts an item at most once
 // every `interval` cycles (the initiation interval, per item), and each item leaves
-// `latency` cycles after it entered, in order. The stages are an unbounded channel of the
-// registry (an item in flight occupies a stage, not a FIFO slot); the unit decides what
-// happens when a finished item cannot leave (it stays, and the stages behind it wait).
+// `latency` cycles after it entered, in order. The stages belong to the unit: it reports
+// an accept or a retire as a change of its tick and the items in flight as its work
+// (Unit::holdsWork), so they are not a wire of the registry, only timed by its clock. The
+// unit decides what happens when a finished item cannot leave (it stays, and the stages
+// behind it wait).
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 
 #include "hw_model/timing/channel_registry.h"
+#include "hw_model/timing/delay_queue.h"
 
 namespace qacc {
 
 template <typename T>
 class Pipeline {
  public:
-  Pipeline(ChannelRegistry& registry, std::uint64_t latency)
-      : registry_(registry), stages_(registry.make<T>(0)), latency_(latency) {}
+  Pipeline(const ChannelRegistry& registry, std::uint64_t latency) : now_(registry.clock()), latency_(latency) {}
   std::uint64_t latency() const { return latency_; }
   // Input side.
-  bool canAccept() const { return registry_.now() >= nextAccept_; }
+  bool canAccept() const { return now_ >= nextAccept_; }
   void accept(const T& item, std::uint64_t interval = 1) {
-    stages_.send(item, latency_);
-    nextAccept_ = registry_.now() + interval;
+    stages_.push_back({now_ + latency_, item});
+    nextAccept_ = now_ + interval;
   }
   // Output side: the oldest item, once its latency has passed.
-  bool done() const { return stages_.ready(); }
-  const T& front() const { return stages_.front(); }
-  void retire() { stages_.receive(); }
+  bool done() const { return !stages_.empty() && stages_.front().finish <= now_; }
+  const T& front() const { return stages_.front().item; }
+  void retire() { stages_.pop_front(); }
   bool holdsWork() const { return !stages_.empty(); }
   // The next cycle at which the pipeline acts by itself: its oldest item finishing or,
   // when input waits, its next accept.
   std::uint64_t nextEvent(bool inputWaiting) const {
-    std::uint64_t t = stages_.nextArrival();
+    std::uint64_t t = stages_.empty() ? std::numeric_limits<std::uint64_t>::max() : stages_.front().finish;
     if (inputWaiting) t = std::min(t, nextAccept_);
     return t;
   }
 
  private:
-  ChannelRegistry& registry_;
-  Channel<T>& stages_;
+  struct Stage {
+    std::uint64_t finish;  // the cycle from which the item can leave
+    T item;
+  };
+  const std::uint64_t& now_;
   std::uint64_t latency_;
   std::uint64_t nextAccept_ = 0;
+  DelayQueue<Stage> stages_;
 };
 
 }  // namespace qacc
