@@ -1,7 +1,7 @@
 // Channel<T>: a wire between timed units that carries a latency (design §3.2): an item
 // sent during cycle t with delay d (d >= 1) can be taken by the receiver from cycle t + d
-// on, and items leave in the order they were sent. A channel has a capacity (0: none,
-// for the stages inside a pipelined unit) counted at the start of the cycle: a slot freed
+// on, and items leave in the order they were sent. A channel has a capacity (0: none; a
+// unit's own stages are a Pipeline, pipeline.h) counted at the start of the cycle: a slot freed
 // by a receive during cycle t can be refilled from t + 1, so the order in which units
 // tick within a cycle does not matter. Channels are made by a ChannelRegistry
 // (channel_registry.h), which holds the current cycle. A channel commits itself lazily: its

@@ -18,7 +18,7 @@ class ChannelRegistry {
   std::uint64_t now() const { return now_; }
   // The clock itself, for what reads it every cycle (channels, a unit's pipeline stages).
   const std::uint64_t& clock() const { return now_; }
-  // Capacity 0: unbounded (the stages inside a pipelined unit).
+  // Capacity 0: unbounded.
   template <typename T>
   Channel<T>& make(std::size_t capacity) {
     auto c = std::make_unique<Channel<T>>(now_, capacity, moves_);
