@@ -3,8 +3,10 @@
 // cycles), so the cycle loop allocates nothing in steady state. The ring's index mask is
 // kept beside its pointer: a push or a pop is a store or a load, an add and an AND.
 #pragma once
+#include <cassert>
 #include <cstddef>
 #include <memory>
+#include <utility>
 
 namespace qacc {
 
@@ -14,14 +16,26 @@ class DelayQueue {
   DelayQueue() : ring_(new T[kInitial]), mask_(kInitial - 1) {}
   DelayQueue(const DelayQueue&) = delete;
   DelayQueue& operator=(const DelayQueue&) = delete;
-  DelayQueue(DelayQueue&&) noexcept = default;
-  DelayQueue& operator=(DelayQueue&&) noexcept = default;
+  // Moving takes the ring; the queue moved from is empty and has no ring: it may only be
+  // destroyed or assigned to.
+  DelayQueue(DelayQueue&& o) noexcept : ring_(std::move(o.ring_)), mask_(o.mask_), head_(o.head_), size_(o.size_) {
+    o.head_ = o.size_ = 0;
+  }
+  DelayQueue& operator=(DelayQueue&& o) noexcept {
+    ring_ = std::move(o.ring_);
+    mask_ = o.mask_;
+    head_ = o.head_;
+    size_ = o.size_;
+    o.head_ = o.size_ = 0;
+    return *this;
+  }
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
   T& front() { return ring_[head_]; }
   const T& front() const { return ring_[head_]; }
   const T& back() const { return ring_[(head_ + size_ - 1) & mask_]; }
   void push_back(const T& v) {
+    assert(ring_);
     if (size_ > mask_) grow();
     ring_[(head_ + size_) & mask_] = v;
     ++size_;

@@ -7,6 +7,7 @@
 // behind it wait).
 #pragma once
 #include <algorithm>
+#include <cassert>
 #include <cstdint>
 #include <limits>
 
@@ -18,7 +19,9 @@ namespace qacc {
 template <typename T>
 class Pipeline {
  public:
-  Pipeline(const ChannelRegistry& registry, std::uint64_t latency) : now_(registry.clock()), latency_(latency) {}
+  Pipeline(const ChannelRegistry& registry, std::uint64_t latency) : now_(registry.clock()), latency_(latency) {
+    assert(latency >= 1);  // an item leaves in a later cycle than it entered
+  }
   std::uint64_t latency() const { return latency_; }
   // Input side.
   bool canAccept() const { return now_ >= nextAccept_; }

@@ -24,7 +24,7 @@ struct PointToken {
   int prim = 0;
   int x = 0, y = 0;
   int cap = -1;  // cap plane, -1 for a surface point
-  std::int64_t z = 0;  // depth, internal format (0 <= z <= 2^depth_frac_bits, depth_frac_bits <= 36)
+  std::int64_t z = 0;  // depth, internal format (|z| < 2^(depth_bits - 1), depth_bits <= 40: clampDepth)
 };
 
 }  // namespace qacc

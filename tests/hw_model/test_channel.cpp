@@ -1,9 +1,15 @@
 // Channels, pipelines and the registry of the cycle engine (hw_model/timing/): two-phase
-// commit, latency, capacity and back-pressure.
+// commit, latency, capacity and back-pressure; the loop over the units (engines/machine_run.h).
 #include <gtest/gtest.h>
 
+#include <memory>
+#include <vector>
+
+#include "hw_model/engines/machine_run.h"
 #include "hw_model/timing/channel_registry.h"
 #include "hw_model/timing/pipeline.h"
+#include "hw_model/timing/shading_unit.h"
+#include "hw_model/timing/traversal_unit.h"
 
 using namespace qacc;
 
@@ -138,4 +144,35 @@ TEST(Pipeline, NextEventIsTheOldestItemOrTheNextAccept) {
   EXPECT_EQ(p.nextEvent(true), 2u);
   wires.skipTo(4);
   EXPECT_TRUE(p.done());
+}
+
+TEST(MachineRun, AUnitsPipelineKeepsTheFrameGoingUntilItsLastItemLeaves) {
+  // A unit's stages are not a wire: the loop learns of them only from the unit (a change
+  // when an item enters or leaves, work while one is inside). One pixel for a shading unit
+  // of latency 12, on the wire in cycle 0: taken in cycle 1, done in cycle 13, and the
+  // quiet cycles between are fast-forwarded, not the end of the frame.
+  ChannelRegistry wires;
+  Channel<PointToken>& in = wires.make<PointToken>(8);
+  in.send({0, 1, 2, -1, 100});
+  ShadingUnit::Params p;
+  p.latency = 12;
+  std::vector<std::unique_ptr<Unit>> units;
+  units.push_back(std::make_unique<ShadingUnit>("shading", p, wires, in));
+  const ShadingUnit& shading = static_cast<const ShadingUnit&>(*units[0]);
+  std::uint64_t fastForwarded = 0;
+  const std::uint64_t cycles = runMachine(wires, units, fastForwarded);
+  EXPECT_EQ(cycles, 14u) << "cycles 0 to 13";
+  EXPECT_EQ(shading.delivered(), 1u);
+  EXPECT_EQ(fastForwarded, 10u) << "cycles 3 to 12";
+  EXPECT_EQ(shading.stats().busy, 13u);
+  EXPECT_EQ(shading.stats().idle, 1u);
+}
+
+TEST(TraversalParams, APipelineCountThatIsNotAPowerOfTwoInterleavesByTheModulo) {
+  const TraversalUnit::Params three{3};
+  EXPECT_EQ(three.pipelineOf(1, 2), 0);
+  EXPECT_EQ(three.pipelineOf(2, 2), 1);  // (x + y) & 2 would give 0
+  EXPECT_EQ(three.pipelineOf(5, 0), 2);
+  const TraversalUnit::Params four{4};
+  EXPECT_EQ(four.pipelineOf(5, 2), 3);
 }
