@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <utility>
@@ -209,6 +210,7 @@ struct Strip {
   TriangleMesh3& out;
 
   int gradientSign;  // +1: the piece's normals point along the quadric's gradient, -1: against
+  const std::vector<HalfSpace>& sharedPlanes;
 
   Vector3d normalAt(const Vector3d& p) const {
     auto it = keptNormals.find(p);
@@ -228,25 +230,37 @@ struct Strip {
     }
     out.triangles.push_back({base, base + 1, base + 2});
   }
-  // A closed loop (no point repeated) triangulated with the least total area (dynamic
-  // programming over its sub-polygons).
+  // A closed loop (no point repeated) triangulated with the fewest triangles in a shared plane,
+  // then the least total area (dynamic programming over its sub-polygons). A triangle whose
+  // three vertices lie on one of the piece's shared planes lies in that plane, not on the
+  // surface, which crosses the plane only along the shared curve (the sliver between an arc's
+  // vertices and its chord, say); the piece across, ending on the same vertices, can draw the
+  // same triangle, and the chord is then used by four triangles.
   void polygon(const std::vector<Vector3d>& p) {
     const std::size_t n = p.size();
     if (n < 3) return;
+    std::vector<std::uint64_t> on(n, 0);  // the shared planes (the first 64) each point lies on
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t h = 0; h < std::min<std::size_t>(sharedPlanes.size(), 64); ++h)
+        if (onPlaneWithinRounding(sharedPlanes[h], p[i])) on[i] |= std::uint64_t(1) << h;
     std::vector<double> w(n * n, 0.0);
-    std::vector<std::size_t> arg(n * n, 0);
+    std::vector<std::size_t> flat(n * n, 0), arg(n * n, 0);
     for (std::size_t len = 2; len < n; ++len)
       for (std::size_t i = 0; i + len < n; ++i) {
         const std::size_t j = i + len;
         double best = 1e300;
+        std::size_t bestFlat = n;
         for (std::size_t k = i + 1; k < j; ++k) {
+          const std::size_t f = flat[i * n + k] + flat[k * n + j] + ((on[i] & on[k] & on[j]) != 0 ? 1 : 0);
           const double c = w[i * n + k] + w[k * n + j] + 0.5 * (p[k] - p[i]).cross(p[j] - p[i]).norm();
-          if (c < best) {
+          if (f < bestFlat || (f == bestFlat && c < best)) {
             best = c;
+            bestFlat = f;
             arg[i * n + j] = k;
           }
         }
         w[i * n + j] = best;
+        flat[i * n + j] = bestFlat;
       }
     std::vector<std::pair<std::size_t, std::size_t>> todo{{0, n - 1}};
     while (!todo.empty()) {
@@ -576,7 +590,7 @@ std::optional<Rebuilt> zipStrip(const TriangleMesh3& mesh, std::size_t surface,
   if (!in || !out || out->empty()) return std::nullopt;
 
   TriangleMesh3 strip;
-  Strip s{q, windingSum >= 0 ? 1 : -1, keptNormals, strip, gradientSum >= 0 ? 1 : -1};
+  Strip s{q, windingSum >= 0 ? 1 : -1, keptNormals, strip, gradientSum >= 0 ? 1 : -1, sharedPlanes};
   // Each new boundary path paired with a kept chain (zipped), or a closed one with nothing
   // kept fanned.
   auto pairUp = [&]() -> bool {

@@ -18,7 +18,10 @@
 //    comes first by fraction of arc length;
 //  - a closed loop with nothing kept inside it (a piece whose triangles all touch its shared
 //    planes) is triangulated with the least total area (fanned from its centroid moved onto
-//    the surface beyond kMaxLoopPoints);
+//    the surface beyond kMaxLoopPoints); here and below, a loop's triangulation has as few
+//    triangles as it can with all three vertices on one shared plane (such a triangle lies in
+//    the plane, off the surface, and the piece across, on the same vertices, would draw it
+//    too), the least total area among those;
 //  - when the paths do not pair up so (a piece whose kept triangles do not separate its
 //    shared planes, or with none kept and an outer boundary): the open paths are joined to
 //    the chains of what is left — the kept chains and the piece's own edges on planes no

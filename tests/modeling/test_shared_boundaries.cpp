@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "modeling/loader/scene_loader.h"
+#include "modeling/tessellation/piece_boundary.h"  // onPlaneWithinRounding
 #include "modeling/tessellation/shared_boundaries.h"
 #include "modeling/tessellation/tessellation.h"
 #include "tests/modeling/piece_of.h"
@@ -273,5 +274,143 @@ TEST(SharedBoundaryStitch, AnArcTwoPiecesAcrossEndOnIsDrawnOnceAtABudget) {
   std::size_t open = 0;
   for (const OpenEdge& e : use.open) open += e.triangle >= midFirst && e.triangle < midFirst + t[mid].mesh.size();
   EXPECT_EQ(open, 0u) << use.open.size() << " open edges in the six pieces";
+  EXPECT_EQ(use.overused, 0u);
+}
+
+// Another corner of bspline_volume_g1 at 64 triangles a piece: its primitives 39813, 39919,
+// 40011, 40012, 40079 and 40080 (their quadrics and planes to 17 digits). 40012 and 40080, on
+// the two sides of one plane, are strips about 2e-4 wide and 0.05 long between two other
+// shared planes, and both end on one short arc across the strip on their common plane,
+// sampled at three points (the middle one 2.8e-6, 1.3 % of the chord, off the chord). Every
+// triangle of either strip touches a shared plane, so each is triangulated again from its
+// boundary loop; the least total area took the sliver between the arc and its chord, a
+// triangle in the shared plane, and both pieces drew it: the chord was used by four
+// triangles, the scene's one edge used more than twice. No triangle of a loop now lies in a
+// shared plane where the loop can be triangulated without one.
+TEST(SharedBoundaryStitch, TwoStripsEndingOnOneArcDrawNoTriangleInTheirCommonPlane) {
+  using test::pieceOf;
+  const std::vector<Primitive> prims = {
+      // 39813
+      pieceOf({0.31269678387501137, 0.47963558388828381, 0.056249999999982037, -0.39626241099492365,
+               0.47963558388828381, 7.6683642916139449, 0.84185009959822232, -7.1806371872860675,
+               0.056249999999982037, 0.84185009959822232, 5.9241832794893128, -1.480126027138402,
+               -0.39626241099492365, -7.1806371872860675, -1.480126027138402, 6.3738208214563787},
+              {{0, -0.45000000000000007, 0.3600000000000001, 0.40500000000000003},
+               {0, 1, 0, -1.2605241172155532},
+               {0.57625887684858479, -0.65088598059275882, -0.061519801940097041, 0.71253519413298549},
+               {-0.02466701663336756, -0.053525167063663399, -0.5223682136915393, 0.087687855585505375},
+               {-0.4065712196552268, 0.37393688910104877, 0.074591121634699553, -0.43893396775500509},
+               {-0.58253210438029801, 0.61467086276501182, -0.10422614679165221, -0.6690770527396892},
+               {0.045524034996753358, 0.52712168752674637, -0.42169735002139713, -0.48806672927309769}}),
+      // 39919
+      pieceOf({0.31269678387501137, 0.47963558388828381, 0.056249999999981926, -0.39626241099492365,
+               0.47963558388828381, 7.6683642916139441, 0.84185009959822299, -7.1806371872860684,
+               0.056249999999981926, 0.84185009959822299, 5.9241832794893128, -1.480126027138402,
+               -0.39626241099492365, -7.1806371872860684, -1.480126027138402, 6.3738208214563787},
+              {{0, -0.45000000000000007, 0.3600000000000001, 0.40500000000000003},
+               {0, 1, 0, -1.2605241172155532},
+               {-0.57625887684858479, 0.65088598059275882, 0.061519801940097041, -0.71253519413298549},
+               {0.066400310971996737, -0.066400310971996737, -0.42867948833681524, 0.07968037316639609},
+               {-0.02466701663336756, -0.053525167063663399, -0.5223682136915393, 0.087687855585505375},
+               {0.43962319236764891, 0, 0.062082461935326273, -0.13188695771029468},
+               {0.045524034996753358, 0.52712168752674637, -0.42169735002139713, -0.48806672927309769}}),
+      // 40011
+      pieceOf({0.31082762827311455, -0.61031250000005288, 0.92970379159215821, 0.58413011782399327,
+               -0.61031250000005288, -20.710347960661878, 24.416778368528028, 18.033219414594193,
+               0.92970379159215821, 24.416778368528028, -13.634522368927733, -22.435525331699118,
+               0.58413011782399327, 18.033219414594193, -22.435525331699118, -16.024532361592211},
+              {{0, 1, 0, -1.2605241172155532},
+               {0.57625887684858479, -0.65088598059275882, -0.061519801940097041, 0.71253519413298549},
+               {-0.58253210438029801, 0.61467086276501182, -0.10422614679165221, -0.6690770527396892},
+               {-0.4065712196552268, 0.37393688910104877, 0.074591121634699553, -0.43893396775500509},
+               {-0.02466701663336756, -0.053525167063663399, -0.5223682136915393, 0.087687855585505375},
+               {0.43962319236764891, 0, 0.062082461935326273, -0.13188695771029468},
+               {0.0010162478590737649, 0.59259775142804516, -0.47489119942969515, -0.53303310192751852},
+               {-0.0, -0.35360952107131238, 0.27628657290267722, 0.31824856896418113}}),
+      // 40012
+      pieceOf({0.31269678387501104, 0.47963558388820671, 0.056250000000060085, -0.39626241099481785,
+               0.47963558388820671, 614.86371787223948, -484.91443276490276, -553.65645540984565,
+               0.056250000000060085, -484.91443276490276, 394.52920957108284, 435.70052855090563,
+               -0.39626241099481785, -553.65645540984565, 435.70052855090563, 498.20205722175575},
+              {{-0.0, 0.45000000000000007, -0.3600000000000001, -0.40500000000000003},
+               {0, 1, 0, -1.2605241172155532},
+               {0.57625887684858479, -0.65088598059275882, -0.061519801940097041, 0.71253519413298549},
+               {-0.58253210438029801, 0.61467086276501182, -0.10422614679165221, -0.6690770527396892},
+               {-0.4065712196552268, 0.37393688910104877, 0.074591121634699553, -0.43893396775500509},
+               {-0.02466701663336756, -0.053525167063663399, -0.5223682136915393, 0.087687855585505375},
+               {-0.0010162478590737649, -0.59259775142804516, 0.47489119942969515, 0.53303310192751852}}),
+      // 40079
+      pieceOf({0.31082762827311455, -0.61031250000005288, 0.92970379159215821, 0.58413011782399327,
+               -0.61031250000005288, -20.710347960661878, 24.416778368528028, 18.033219414594193,
+               0.92970379159215821, 24.416778368528028, -13.634522368927733, -22.435525331699118,
+               0.58413011782399327, 18.033219414594193, -22.435525331699118, -16.024532361592211},
+              {{0, 1, 0, -1.2605241172155532},
+               {-0.57625887684858479, 0.65088598059275882, 0.061519801940097041, -0.71253519413298549},
+               {-0.02466701663336756, -0.053525167063663399, -0.5223682136915393, 0.087687855585505375},
+               {0.43962319236764891, 0, 0.062082461935326273, -0.13188695771029468},
+               {0.066400310971996737, -0.066400310971996737, -0.42867948833681524, 0.07968037316639609},
+               {0.0010162478590737649, 0.59259775142804516, -0.47489119942969515, -0.53303310192751852},
+               {-0.0, -0.35360952107131238, 0.27628657290267722, 0.31824856896418113}}),
+      // 40080
+      pieceOf({0.31269678387501104, 0.47963558388820671, 0.056250000000060085, -0.39626241099481785,
+               0.47963558388820671, 614.86371787223948, -484.91443276490276, -553.65645540984565,
+               0.056250000000060085, -484.91443276490276, 394.52920957108284, 435.70052855090563,
+               -0.39626241099481785, -553.65645540984565, 435.70052855090563, 498.20205722175575},
+              {{-0.0, 0.45000000000000007, -0.3600000000000001, -0.40500000000000003},
+               {0, 1, 0, -1.2605241172155532},
+               {-0.57625887684858479, 0.65088598059275882, 0.061519801940097041, -0.71253519413298549},
+               {-0.02466701663336756, -0.053525167063663399, -0.5223682136915393, 0.087687855585505375},
+               {0.43962319236764891, 0, 0.062082461935326273, -0.13188695771029468},
+               {0.066400310971996737, -0.066400310971996737, -0.42867948833681524, 0.07968037316639609},
+               {-0.0010162478590737649, -0.59259775142804516, 0.47489119942969515, 0.53303310192751852}})
+  };
+  const std::size_t n = prims.size();
+  TessellationOptions o;
+  o.triangles = 64;
+  std::vector<PrimitiveTessellation> t(n);
+  std::vector<TriangleMesh3*> meshes(n);
+  std::vector<std::size_t> surface(n);
+  tess::SharedBoundarySampling sampling;
+  sampling.chordError.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    t[i] = tessellatePrimitive(prims[i], o);
+    ASSERT_GT(t[i].surface_triangles, 0u) << i;
+    meshes[i] = &t[i].mesh;
+    surface[i] = t[i].surface_triangles;
+    sampling.chordError[i] = t[i].max_chord_error;
+  }
+  const tess::StitchReport r = tess::stitchSharedBoundaries(prims, meshes, surface, sampling);
+  EXPECT_EQ(r.refused_pieces, 0u);
+  EXPECT_EQ(r.refused_planes, 0u);
+  for (std::size_t strip : {3, 5}) EXPECT_TRUE(r.rebuilt[strip]) << strip;  // 40012, 40080
+  // The planes two of the pieces share: no triangle has its three vertices on one of them.
+  std::vector<HalfSpace> shared;
+  for (std::size_t i = 0; i < n; ++i)
+    for (const HalfSpace& h : prims[i].clip)
+      for (std::size_t j = 0; j < n; ++j)
+        for (const HalfSpace& g : prims[j].clip)
+          if (g.p == -h.p && std::none_of(shared.begin(), shared.end(), [&](const HalfSpace& s) { return s.p == h.p; }))
+            shared.push_back(h);
+  EXPECT_EQ(shared.size(), 6u);  // three planes, each way round
+  TriangleMesh3 all;
+  for (std::size_t i = 0; i < n; ++i) all.append(t[i].mesh);
+  std::size_t inPlane = 0;
+  for (const auto& tri : all.triangles)
+    for (const HalfSpace& h : shared)
+      inPlane += std::all_of(tri.begin(), tri.end(), [&](int v) {
+        return tess::onPlaneWithinRounding(h, all.positions[std::size_t(v)]);
+      });
+  EXPECT_EQ(inPlane, 0u);
+  // Every edge on a shared plane is used twice (the six pieces' only open edges are on the
+  // planes none of the others shares), none more.
+  const EdgeUse use = edgeUse(all);
+  std::size_t openOnShared = 0;
+  for (const OpenEdge& e : use.open)
+    for (const HalfSpace& h : shared)
+      if (tess::onPlaneWithinRounding(h, e.a) && tess::onPlaneWithinRounding(h, e.b)) {
+        ++openOnShared;
+        break;
+      }
+  EXPECT_EQ(openOnShared, 0u) << use.open.size() << " open edges in the six pieces";
   EXPECT_EQ(use.overused, 0u);
 }
