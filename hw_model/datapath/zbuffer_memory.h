@@ -12,6 +12,7 @@
 
 #include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/fixed_point.h"
+#include "hw_model/datapath/screen_interleave.h"
 
 namespace qacc {
 
@@ -54,11 +55,7 @@ struct ZBufferMemory {
     const i128 top = (i128(1) << cfg.zbuffer_bits) - 1;
     return std::uint32_t(v < 0 ? 0 : (v > top ? top : v));
   }
-  // (x + y >= 0: for a power-of-two bank count the mask is the same bank as the modulo,
-  // without the host's divide.)
-  static int bankOf(int x, int y, int banks) {
-    return (banks & (banks - 1)) == 0 ? (x + y) & (banks - 1) : (x + y) % banks;
-  }
+  static int bankOf(int x, int y, int banks) { return interleavedUnit(x, y, banks); }
 };
 
 }  // namespace qacc

@@ -11,6 +11,7 @@
 
 #include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/primitive_setup.h"
+#include "hw_model/datapath/screen_interleave.h"
 #include "hw_model/datapath/span_solver.h"
 #include "hw_model/timing/channel.h"
 #include "hw_model/timing/tokens.h"
@@ -26,10 +27,7 @@ class TraversalUnit final : public Unit {
   struct Params {
     int pipelines = 2;
     static Params from(const HwConfig& cfg) { return {cfg.pipelines}; }
-    // (x + y >= 0: for a power-of-two count the mask is the modulo, without a divide.)
-    int pipelineOf(int x, int y) const {
-      return (pipelines & (pipelines - 1)) == 0 ? (x + y) & (pipelines - 1) : (x + y) % pipelines;
-    }
+    int pipelineOf(int x, int y) const { return interleavedUnit(x, y, pipelines); }
   };
 
   // The rows' spans come from the PixelTrace (the same span solver, run beforehand).
