@@ -105,6 +105,28 @@ std::string caseName(const ::testing::TestParamInfo<SceneCase>& info) {
 
 class SharedBoundaryScene : public ::testing::TestWithParam<SceneCase> {};
 
+// The pieces tessellated at 64 triangles each (each with some surface), then stitched along
+// the planes they share with each piece's measured chord error (tess::stitchSharedBoundaries).
+void stitchAtLevel64(const std::vector<Primitive>& prims, std::vector<PrimitiveTessellation>& t,
+                     tess::StitchReport& r) {
+  const std::size_t n = prims.size();
+  TessellationOptions o;
+  o.triangles = 64;
+  t.assign(n, PrimitiveTessellation{});
+  std::vector<TriangleMesh3*> meshes(n);
+  std::vector<std::size_t> surface(n);
+  tess::SharedBoundarySampling sampling;
+  sampling.chordError.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    t[i] = tessellatePrimitive(prims[i], o);
+    ASSERT_GT(t[i].surface_triangles, 0u) << i;
+    meshes[i] = &t[i].mesh;
+    surface[i] = t[i].surface_triangles;
+    sampling.chordError[i] = t[i].max_chord_error;
+  }
+  r = tess::stitchSharedBoundaries(prims, meshes, surface, sampling);
+}
+
 }  // namespace
 
 // One tessellation per tolerance (2 and 0.5 px) for every check: every edge on a shared plane
@@ -245,21 +267,9 @@ TEST(SharedBoundaryStitch, AnArcTwoPiecesAcrossEndOnIsDrawnOnceAtABudget) {
                {-0.34987364600524334, -0.025706799567104591, 0.020569699746267836, -0.32259832127485039}}),
   };
   const std::size_t n = prims.size(), mid = 2;  // 2792
-  TessellationOptions o;
-  o.triangles = 64;
-  std::vector<PrimitiveTessellation> t(n);
-  std::vector<TriangleMesh3*> meshes(n);
-  std::vector<std::size_t> surface(n);
-  tess::SharedBoundarySampling sampling;
-  sampling.chordError.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    t[i] = tessellatePrimitive(prims[i], o);
-    ASSERT_GT(t[i].surface_triangles, 0u) << i;
-    meshes[i] = &t[i].mesh;
-    surface[i] = t[i].surface_triangles;
-    sampling.chordError[i] = t[i].max_chord_error;
-  }
-  const tess::StitchReport r = tess::stitchSharedBoundaries(prims, meshes, surface, sampling);
+  std::vector<PrimitiveTessellation> t;
+  tess::StitchReport r;
+  ASSERT_NO_FATAL_FAILURE(stitchAtLevel64(prims, t, r));
   EXPECT_EQ(r.refused_pieces, 0u);
   EXPECT_EQ(r.refused_planes, 0u);
   EXPECT_TRUE(r.rebuilt[mid]);
@@ -365,21 +375,9 @@ TEST(SharedBoundaryStitch, TwoStripsEndingOnOneArcDrawNoTriangleInTheirCommonPla
                {-0.0010162478590737649, -0.59259775142804516, 0.47489119942969515, 0.53303310192751852}})
   };
   const std::size_t n = prims.size();
-  TessellationOptions o;
-  o.triangles = 64;
-  std::vector<PrimitiveTessellation> t(n);
-  std::vector<TriangleMesh3*> meshes(n);
-  std::vector<std::size_t> surface(n);
-  tess::SharedBoundarySampling sampling;
-  sampling.chordError.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    t[i] = tessellatePrimitive(prims[i], o);
-    ASSERT_GT(t[i].surface_triangles, 0u) << i;
-    meshes[i] = &t[i].mesh;
-    surface[i] = t[i].surface_triangles;
-    sampling.chordError[i] = t[i].max_chord_error;
-  }
-  const tess::StitchReport r = tess::stitchSharedBoundaries(prims, meshes, surface, sampling);
+  std::vector<PrimitiveTessellation> t;
+  tess::StitchReport r;
+  ASSERT_NO_FATAL_FAILURE(stitchAtLevel64(prims, t, r));
   EXPECT_EQ(r.refused_pieces, 0u);
   EXPECT_EQ(r.refused_planes, 0u);
   for (std::size_t strip : {3, 5}) EXPECT_TRUE(r.rebuilt[strip]) << strip;  // 40012, 40080
