@@ -13,6 +13,7 @@
 #include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/fixed_point.h"
 #include "hw_model/datapath/screen_interleave.h"
+#include "raster/image/default_init_allocator.h"
 
 namespace qacc {
 
@@ -25,7 +26,9 @@ struct ZEntry {
 
 struct ZBufferMemory {
   int width = 0, height = 0;
-  std::vector<ZEntry> px;
+  // Frame-sized in hw-cycle: backed by huge pages where the system offers them
+  // (raster/image/default_init_allocator.h); every record is still constructed cleared.
+  UninitVector<ZEntry> px;
 
   ZBufferMemory(int w, int h) : width(w), height(h), px(std::size_t(w) * std::size_t(h)) {}
   std::size_t size() const { return px.size(); }

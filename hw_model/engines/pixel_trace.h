@@ -17,6 +17,7 @@
 #include "hw_model/datapath/overflow_counters.h"
 #include "hw_model/datapath/primitive_setup.h"
 #include "hw_model/datapath/span_solver.h"
+#include "raster/image/default_init_allocator.h"
 
 namespace qacc {
 
@@ -36,8 +37,9 @@ struct RowSpans {  // a row of a primitive with at least one span
 struct PixelTrace {
   // Every primitive's pixels in one buffer (primitive i's are [first[i], first[i + 1]), in
   // traversal order), so that the trace — tens of megabytes at 1920x1080 — is one block,
-  // returned whole to the system when the trace is released.
-  std::vector<TracedPixel> pixels;
+  // returned whole to the system when the trace is released (and, like a frame buffer,
+  // backed by huge pages where the system offers them: raster/image/default_init_allocator.h).
+  UninitVector<TracedPixel> pixels;
   std::vector<std::size_t> first;           // indexed by primitive, one past the last at the end
   std::vector<std::vector<RowSpans>> rows;  // indexed by primitive: its non-empty rows
   OverflowCounters overflow;                // datapath overflows of all pixels
