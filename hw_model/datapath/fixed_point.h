@@ -103,6 +103,16 @@ inline T shiftRoundR(T v, int shift) {
   }
 }
 
+// shiftRoundR where the caller knows shift >= 1 and |v| + 2^(shift-1) < 2^(bits of T - 1)
+// (it states the bound where it calls): round to nearest is then always the add-and-floor
+// form, with no overflow test and no test of the shift's sign. The same value as shiftRoundR.
+template <Rounding R, typename T>
+inline T shiftRoundFitR(T v, int shift) {
+  if constexpr (R == Rounding::Truncate) return v >> shift;
+  else if constexpr (R == Rounding::Nearest) return (v + (T(1) << (shift - 1))) >> shift;
+  else return shiftRoundT<T>(v, shift, R);
+}
+
 // Integer quotient num / den (den != 0) with the given rounding (Truncate = toward zero).
 inline i128 divRound(i128 num, i128 den, Rounding r) {
   constexpr i128 k63 = i128(1) << 62;

@@ -45,6 +45,33 @@ class ReciprocalSqrt {
     r.y = std::int64_t(((unsigned __int128)y0 * t) >> (4 * P + 3));
     return r;
   }
+  // The same Result as compute(L) for L below 2^64, in fewer host instructions (the shading
+  // datapath with 64-bit registers, vector_normalizer64.h, calls it four times a pixel):
+  //  - the even shift: with c = clz(L), the bit length is 64 - c and s = 2k = 64 - c - (2P+2)
+  //    rounded up to even = 64 - (2P+2) - c + (c & 1); so m = L · 2^-s is L shifted fully
+  //    left (no bit lost), then right by 64 - (2P+2) + (c & 1), which truncates exactly where
+  //    L >> s does;
+  //  - the Newton step is the same integer, rewritten: y0 · (3 · 2^(4P+2) − m y0²) =
+  //    3 y0 · 2^(4P+2) − m · y0³, where y0 < 2^(P+1) makes y0³ < 2^(3P+3) = 2^63 a 64-bit
+  //    value, so m · y0³ is one 64 x 64 → 128-bit multiply (m < 2^(2P+2)). The numerator is
+  //    positive (t > 0 above) and 3 y0 · 2^(4P+2) is a multiple of 2^64, so its bits above
+  //    2^64 are 3 y0 · 2^(4P+2-64) − (m y0³ >> 64) − (a borrow when the low half of m y0³ is
+  //    not 0), and the shift by 4P+3 >= 64 keeps only those.
+  // Tests check it against compute().
+  static Result compute64(std::uint64_t L) {
+    constexpr int P = kPrecision, S = kSeedBits, W = 64 - (2 * P + 2);
+    static_assert(W > 0 && 3 * P + 3 <= 63 && 4 * P + 3 >= 64, "m and y0^3 must fit 64 bits, the shift must drop the low half");
+    Result r;
+    if (L == 0) return r;
+    const int c = __builtin_clzll(L);
+    const std::uint64_t m = (L << c) >> (W + (c & 1));
+    r.k = (W - c + (c & 1)) >> 1;  // an even number: the halving is exact
+    const std::uint64_t y0 = std::uint64_t(kSeedRom[std::size_t(m >> (2 * P + 2 - S))]);
+    const unsigned __int128 my3 = (unsigned __int128)m * (y0 * y0 * y0);
+    const std::uint64_t hi = ((3 * y0) << (4 * P + 2 - 64)) - std::uint64_t(my3 >> 64) - (std::uint64_t(my3) != 0);
+    r.y = std::int64_t(hi >> (4 * P + 3 - 64));
+    return r;
+  }
   static int romEntries() { return (1 << kSeedBits) - (1 << (kSeedBits - 2)); }
   static int romBits() { return romEntries() * (kPrecision + 1); }
   // The seed ROM: entry i (i in [2^(S-2), 2^S)) covers m in [i, i+1) · 2^(2P+2-S). Built

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 #include "hw_model/datapath/reciprocal_sqrt.h"
+#include "hw_model/datapath/shading_datapath64.h"
+#include "hw_model/datapath/shading_field.h"
 #include "hw_model/datapath/sqrt_extractor.h"
 #include "raster/pixel/shading.h"
 
@@ -73,6 +74,27 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg, Over
     ovf.coarse += rom.coarse;
     L.materials.push_back(std::move(q));
   }
+  for (const LightQ& q : L.lights) {
+    if (q.type == Light::Type::Directional) {
+      Directional64 d;
+      for (int k = 0; k < 3; ++k) d.color[k] = std::int64_t(q.color[k]), d.dir[k] = std::int64_t(q.dir[k]);
+      L.directional64.push_back(d);
+    } else if (q.type == Light::Type::Point) {
+      Point64 p;
+      for (int k = 0; k < 3; ++k) p.color[k] = std::int64_t(q.color[k]);
+      p.point = q.point;
+      L.points64.push_back(p);
+    }
+  }
+  for (const MaterialQ& q : L.materials) {
+    Material64 m;
+    for (int k = 0; k < 3; ++k) m.color[k] = std::int64_t(q.color[k]);
+    for (const LightQ& l : L.lights)
+      if (l.type == Light::Type::Ambient)
+        for (int k = 0; k < 3; ++k) m.ambient[k] += std::int64_t(shiftRound(l.color[k] * q.color[k], cf, cfg.rounding));
+    m.specular = q.specular ? q.specular->data() : nullptr;
+    L.materials64.push_back(m);
+  }
   const int ns = (1 << cf) + 1;
   L.srgb.resize(std::size_t(ns));
   for (int i = 0; i < ns; ++i) L.srgb[std::size_t(i)] = linearToSrgb8(std::ldexp(double(i), -cf));
@@ -81,24 +103,18 @@ LightingSetup LightingSetup::build(const Scene& scene, const HwConfig& cfg, Over
 
 namespace {
 
-// The shading datapath after the exact field evaluation, with registers of type T. Every
-// value after the leading-zero normaliser has at most normal_bits bits, so T =
-// std::int64_t holds all of it when normal_bits <= 23 (len² · 2^2G < 3 · 2^60); the i128
-// instantiation serves wider configurations. Both give the same bits.
-// floor(sqrt(x)) for 0 <= x < 2^63: the double estimate is off by at most one.
-inline std::int64_t isqrt63(std::int64_t x) {
-  std::int64_t q = std::int64_t(std::sqrt(double(x)));
-  if (q * q > x) --q;
-  else if ((q + 1) * (q + 1) <= x) ++q;
-  return q;
-}
+// The reference datapath: the shading unit as specified, with 128-bit registers throughout
+// (shadePixelWide). shadePixel computes the same bits with 64-bit registers
+// (shading_datapath64.h) wherever they provably hold every value; tests compare the two.
 
 // |v| as an unsigned 128-bit value (v > -2^127 in every datapath here).
 inline unsigned __int128 magnitude(i128 v) { return v < 0 ? (unsigned __int128)(-v) : (unsigned __int128)v; }
 
+using T = i128;
+
 // Inlined into the shading datapath (four calls a pixel): its inputs then stay in registers
 // instead of being stored as 64-bit halves and reloaded as 128-bit values.
-template <typename T, Rounding R>
+template <Rounding R>
 [[gnu::always_inline]] inline void normalizeT(const i128 in[3], const HwConfig& cfg, T out[3]) {
   const int nb = cfg.normal_bits, uf = cfg.unit_frac_bits, G = 8;
   T n[3];
@@ -136,9 +152,7 @@ template <typename T, Rounding R>
     return;
   }
   // Reciprocal square root by recurrence: R = 2^(uf + G + nb - 1) / sqrt(len2 · 2^2G), then unit = n R >> (nb - 1).
-  T root;
-  if constexpr (std::is_same_v<T, std::int64_t>) root = isqrt63(len2 * (T(1) << (2 * G)));
-  else root = T(SqrtExtractor::compute((unsigned __int128)(len2 * (T(1) << (2 * G)))));
+  const T root = T(SqrtExtractor::compute((unsigned __int128)(len2 * (T(1) << (2 * G)))));
   if (root == 0) {
     out[0] = out[1] = out[2] = 0;
     return;
@@ -147,26 +161,12 @@ template <typename T, Rounding R>
   for (int k = 0; k < 3; ++k) out[k] = shiftRoundR<R, T>(n[k] * rs, nb - 1);
 }
 
-// A component of an affine field at (u, v, z). Narrow: the coefficients fit 64 bits
-// (value_bits + interp_frac_bits + 2 <= 64), so each product is one 64 x 64 -> 128-bit
-// multiply on the host; the same value as the 128-bit products.
-inline i128 mul64(i128 a, i128 b) { return i128(std::int64_t(a)) * i128(std::int64_t(b)); }
-template <bool Narrow>
-inline i128 evalField(const VectorSetup& f, int k, int u, int v, i128 z, int Fz) {
-  const LinearCoefficients& c = f.uv[k];
-  if constexpr (Narrow) {
-    const i128 uv = mul64(c.A, u) + mul64(c.B, v) + c.C;
-    return i128((unsigned __int128)uv << Fz) + mul64(f.cz[k], z);
-  }
-  return shl(c.A * u + c.B * v + c.C, Fz) + f.cz[k] * z;
-}
-
-template <Rounding R, typename T>
+template <Rounding R>
 inline T dot(const T a[3], const T b[3], int uf) {
   return shiftRoundR<R, T>(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf);
 }
 
-template <typename T, Rounding R, bool Narrow>
+template <Rounding R>
 std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
                                    int v, i128 z, int cap) {
   const int Fz = cfg.depth_frac_bits, uf = cfg.unit_frac_bits, cf = cfg.color_frac_bits;
@@ -175,11 +175,11 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
   if (cap >= 0) {
     for (int k = 0; k < 3; ++k) raw[k] = s.planes[std::size_t(cap)].capNormal[k];
   } else {
-    for (int k = 0; k < 3; ++k) raw[k] = evalField<Narrow>(s.normal, k, u, v, z, Fz);
+    for (int k = 0; k < 3; ++k) raw[k] = evalShadingField<false>(s.normal, k, u, v, z, Fz);
   }
-  normalizeT<T, R>(raw, cfg, N);
-  for (int k = 0; k < 3; ++k) raw[k] = evalField<Narrow>(s.view, k, u, v, z, Fz);
-  normalizeT<T, R>(raw, cfg, V);
+  normalizeT<R>(raw, cfg, N);
+  for (int k = 0; k < 3; ++k) raw[k] = evalShadingField<false>(s.view, k, u, v, z, Fz);
+  normalizeT<R>(raw, cfg, V);
   if (dot<R>(N, V, uf) < 0)
     for (int k = 0; k < 3; ++k) N[k] = -N[k];  // two-sided
   const int mi = s.material >= 0 && s.material < int(L.materials.size()) ? s.material : 0;
@@ -195,15 +195,15 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
     if (l.type == Light::Type::Directional) {
       for (int k = 0; k < 3; ++k) Lv[k] = T(l.dir[k]);
     } else {
-      for (int k = 0; k < 3; ++k) raw[k] = evalField<Narrow>(s.pointLights[std::size_t(l.point)], k, u, v, z, Fz);
-      normalizeT<T, R>(raw, cfg, Lv);
+      for (int k = 0; k < 3; ++k) raw[k] = evalShadingField<false>(s.pointLights[std::size_t(l.point)], k, u, v, z, Fz);
+      normalizeT<R>(raw, cfg, Lv);
     }
     const T ndl = std::min(dot<R>(N, Lv, uf), one);
     if (ndl <= 0) continue;
     T H[3];
     i128 hs[3];
     for (int k = 0; k < 3; ++k) hs[k] = i128(Lv[k]) + i128(V[k]);
-    normalizeT<T, R>(hs, cfg, H);
+    normalizeT<R>(hs, cfg, H);
     const T ndh = std::clamp<T>(dot<R>(N, H, uf), 0, one);
     const T spec = (*m.specular)[std::size_t(ndh)];
     for (int k = 0; k < 3; ++k)
@@ -216,15 +216,14 @@ std::array<std::uint8_t, 3> shadeT(const PrimitiveSetup& s, const LightingSetup&
 }
 
 // shadeT instantiated for the configured rounding mode.
-template <typename T, bool Narrow>
-std::array<std::uint8_t, 3> shadeRounded(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
-                                         int v, i128 z, int cap) {
+std::array<std::uint8_t, 3> shadeRounded(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
+                                         i128 z, int cap) {
   switch (cfg.rounding) {
-    case Rounding::Truncate: return shadeT<T, Rounding::Truncate, Narrow>(s, L, cfg, u, v, z, cap);
-    case Rounding::Nearest: return shadeT<T, Rounding::Nearest, Narrow>(s, L, cfg, u, v, z, cap);
+    case Rounding::Truncate: return shadeT<Rounding::Truncate>(s, L, cfg, u, v, z, cap);
+    case Rounding::Nearest: return shadeT<Rounding::Nearest>(s, L, cfg, u, v, z, cap);
     case Rounding::NearestEven: break;
   }
-  return shadeT<T, Rounding::NearestEven, Narrow>(s, L, cfg, u, v, z, cap);
+  return shadeT<Rounding::NearestEven>(s, L, cfg, u, v, z, cap);
 }
 
 }  // namespace
@@ -232,16 +231,13 @@ std::array<std::uint8_t, 3> shadeRounded(const PrimitiveSetup& s, const Lighting
 std::array<std::uint8_t, 3> shadePixel(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
                                        i128 z, int cap, OverflowCounter& ovf) {
   (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
-  if (cfg.normal_bits <= 23) {
-    if (cfg.value_bits + cfg.interp_frac_bits + 2 <= 64) return shadeRounded<std::int64_t, true>(s, L, cfg, u, v, z, cap);
-    return shadeRounded<std::int64_t, false>(s, L, cfg, u, v, z, cap);
-  }
-  return shadeRounded<i128, false>(s, L, cfg, u, v, z, cap);
+  if (shadingDatapath64Applies(cfg)) return shadePixel64(s, L, cfg, u, v, z, cap);
+  return shadeRounded(s, L, cfg, u, v, z, cap);
 }
 
 std::array<std::uint8_t, 3> shadePixelWide(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
                                            int v, i128 z, int cap) {
-  return shadeRounded<i128, false>(s, L, cfg, u, v, z, cap);
+  return shadeRounded(s, L, cfg, u, v, z, cap);
 }
 
 }  // namespace qacc

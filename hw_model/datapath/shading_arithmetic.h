@@ -39,17 +39,39 @@ struct LightingSetup {
   std::vector<LightQ> lights;
   std::vector<MaterialQ> materials;
   std::vector<std::uint8_t> srgb;  // ROM: linear i / 2^color_frac → 8-bit sRGB
+
+  // The same constants regrouped for the 64-bit datapath (shading_datapath64.h), each a
+  // 64-bit value (light colours below 2^(color_frac+7), material colours at most
+  // 2^color_frac, directions below 2^(unit_frac+1) in magnitude): the directional and the
+  // point lights in two lists, and per material the sum of its ambient terms,
+  // Σ round(light · colour · 2^-color_frac) over the ambient lights (in cfg.rounding). The
+  // colour of a pixel is a sum of integer terms, the same in any order.
+  struct Directional64 {
+    std::int64_t color[3] = {0, 0, 0}, dir[3] = {0, 0, 0};
+  };
+  struct Point64 {
+    std::int64_t color[3] = {0, 0, 0};
+    int point = 0;  // index into PrimitiveSetup::pointLights
+  };
+  struct Material64 {
+    std::int64_t color[3] = {0, 0, 0}, ambient[3] = {0, 0, 0};
+    const std::int32_t* specular = nullptr;  // the entries of MaterialQ::specular (kept alive by it)
+  };
+  std::vector<Directional64> directional64;
+  std::vector<Point64> points64;
+  std::vector<Material64> materials64;
   // Values that do not fit their formats (light colours of 2^8 and more, specular table
   // entries of 2^(31 - color_frac) and more) saturate and are counted in `ovf`.
   static LightingSetup build(const Scene& scene, const HwConfig& cfg, OverflowCounter& ovf);
 };
 
 // The colour of a visible point (u, v local to the primitive's box, z internal depth, cap
-// plane or -1) in 8-bit sRGB.
+// plane or -1) in 8-bit sRGB. L must have been built with the same cfg.
 std::array<std::uint8_t, 3> shadePixel(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
                                        i128 z, int cap, OverflowCounter& ovf);
-// The same datapath with 128-bit registers throughout (shadePixel uses 64-bit registers
-// where the widths allow; the two must agree bit for bit).
+// The reference: the same datapath with 128-bit registers throughout, computed as specified
+// (shadePixel uses 64-bit registers and the regrouped constants where the widths allow,
+// shading_datapath64.h; the two must agree bit for bit).
 std::array<std::uint8_t, 3> shadePixelWide(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
                                            int v, i128 z, int cap);
 
