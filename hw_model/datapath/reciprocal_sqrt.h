@@ -60,12 +60,12 @@ class ReciprocalSqrt {
   // Tests check it against compute().
   static Result compute64(std::uint64_t L) {
     constexpr int P = kPrecision, S = kSeedBits, W = 64 - (2 * P + 2);
-    static_assert(W > 0 && 3 * P + 3 <= 63 && 4 * P + 3 >= 64, "m and y0^3 must fit 64 bits, the shift must drop the low half");
+    static_assert(W > 0 && W % 2 == 0 && 3 * P + 3 <= 63 && 4 * P + 3 >= 64, "m and y0^3 must fit 64 bits, the shift must drop the low half");
     Result r;
     if (L == 0) return r;
     const int c = __builtin_clzll(L);
     const std::uint64_t m = (L << c) >> (W + (c & 1));
-    r.k = (W - c + (c & 1)) >> 1;  // an even number: the halving is exact
+    r.k = W / 2 - (c >> 1);  // (W - c + (c & 1)) / 2, W even
     const std::uint64_t y0 = std::uint64_t(kSeedRom[std::size_t(m >> (2 * P + 2 - S))]);
     const unsigned __int128 my3 = (unsigned __int128)m * (y0 * y0 * y0);
     const std::uint64_t hi = ((3 * y0) << (4 * P + 2 - 64)) - std::uint64_t(my3 >> 64) - (std::uint64_t(my3) != 0);
