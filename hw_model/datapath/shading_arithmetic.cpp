@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "hw_model/datapath/reciprocal_sqrt.h"
-#include "hw_model/datapath/shading_datapath64.h"
 #include "hw_model/datapath/shading_field.h"
 #include "hw_model/datapath/sqrt_extractor.h"
 #include "raster/pixel/shading.h"
@@ -228,12 +227,7 @@ std::array<std::uint8_t, 3> shadeRounded(const PrimitiveSetup& s, const Lighting
 
 }  // namespace
 
-std::array<std::uint8_t, 3> shadePixel(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
-                                       i128 z, int cap, OverflowCounter& ovf) {
-  (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
-  if (shadingDatapath64Applies(cfg)) return shadePixel64(s, L, cfg, u, v, z, cap);
-  return shadeRounded(s, L, cfg, u, v, z, cap);
-}
+// shadePixel: in shading_datapath64.cpp, beside the 64-bit datapath it takes where it applies.
 
 std::array<std::uint8_t, 3> shadePixelWide(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
                                            int v, i128 z, int cap) {

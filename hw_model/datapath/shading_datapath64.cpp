@@ -16,7 +16,7 @@ inline Reg dot(const Reg a[3], const Reg b[3], int uf) {
   return shiftRoundFitR<R, Reg>(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf);
 }
 
-// Inlined into shadePixel64's one dispatch (by rounding, normaliser and coefficient width):
+// Inlined into shadePixel's one dispatch (by rounding, normaliser and coefficient width):
 // no call per level, and the colour bytes leave in one register.
 template <Rounding R, Normalizer Z, bool Narrow>
 [[gnu::always_inline]] inline std::array<std::uint8_t, 3> shade64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
@@ -66,8 +66,12 @@ template <Rounding R, Normalizer Z, bool Narrow>
 
 }  // namespace
 
-std::array<std::uint8_t, 3> shadePixel64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
-                                         int v, i128 z, int cap) {
+// shadePixel (shading_arithmetic.h) lives here, beside the datapath it dispatches to: one
+// call a pixel, the instantiation picked by one switch.
+std::array<std::uint8_t, 3> shadePixel(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
+                                       i128 z, int cap, OverflowCounter& ovf) {
+  (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
+  if (!shadingDatapath64Applies(cfg)) return shadePixelWide(s, L, cfg, u, v, z, cap);
   constexpr Rounding T = Rounding::Truncate, N = Rounding::Nearest, E = Rounding::NearestEven;
   constexpr Normalizer Nw = Normalizer::Newton, Rc = Normalizer::Recurrence;
   const bool narrow = cfg.value_bits + cfg.interp_frac_bits + 2 <= 64;

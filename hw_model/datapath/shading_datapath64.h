@@ -1,6 +1,6 @@
 // The shading datapath of shading_arithmetic.h computed with 64-bit host registers — the
-// same bits as the 128-bit reference (shadePixelWide), for less host work; shadePixel uses
-// it wherever it applies. What differs from the reference, and why the bits are the same:
+// same bits as the 128-bit reference (shadePixelWide), for less host work; shadePixel
+// takes it wherever it applies. What differs from the reference, and why the bits are the same:
 //  - the normaliser keeps every register in 64 bits (vector_normalizer64.h gives the bounds)
 //    and takes the Newton step as one 64 x 64 -> 128-bit multiply (ReciprocalSqrt::compute64);
 //  - the lights come regrouped by type and each material's ambient term summed
@@ -28,8 +28,7 @@ inline bool shadingDatapath64Applies(const HwConfig& cfg) {
   return cfg.shading_normalizer == Normalizer::Newton || cfg.normal_bits <= 23;
 }
 
-// shadePixel's colour, computed with 64-bit registers; requires shadingDatapath64Applies(cfg).
-std::array<std::uint8_t, 3> shadePixel64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u,
-                                         int v, i128 z, int cap);
+// shadePixel (declared in shading_arithmetic.h, defined in shading_datapath64.cpp) takes
+// this datapath when it applies and shadePixelWide otherwise.
 
 }  // namespace qacc
