@@ -12,7 +12,8 @@
 //    len2 = Σ n_k² < 3 · 2^(2nb-2) <= 3 · 2^58 (a 64-bit input of compute64) and len2 > 0;
 //  - Newton: y <= 2^(P+1) (the Newton step for 1/sqrt never overshoots: y1 <= 2^(2P+1) /
 //    sqrt(m), m >= 2^(2P)), so |n_k y| <= 2^(nb+P) <= 2^50; the shift sh = k + 2P + 1 - uf
-//    is at least 1 (L >= 1 gives k >= -P, and uf <= P) and at most 2P + 1 + 30;
+//    is at least 1 (L >= 1 gives k >= -P, and uf <= P) and at most 44 (len2 < 2^60 gives
+//    k <= 9, and uf >= 6), so |n_k y| + 2^(sh-1) < 2^63;
 //  - recurrence (nb <= 23): len2 · 2^2G < 3 · 2^60 (isqrt63's domain); the root is at least
 //    max |n_k| · 2^G >= 2^(nb-2+G), so rs = 2^(uf+G+nb-1) / root <= 2^(uf+1) + 1 and
 //    |n_k rs| < 2^(nb+uf+1) <= 2^44.
