@@ -7,8 +7,8 @@
 //    (LightingSetup::directional64, points64, materials64): a pixel's colour is a sum of
 //    integers, the same in any order;
 //  - the rounding shifts of dot products and colour terms test no overflow: |N_k|, |V_k|,
-//    |H_k| <= 2^uf + 1 and light directions < 2^(uf+1), so a dot product's sum is below
-//    3 · 2^(2uf+2) <= 3 · 2^42; the diffuse product colour · (N·L) is at most
+//    |H_k| <= 2^uf + 2 (unit vectors, rounded) and light directions < 2^(uf+1), so a dot
+//    product's sum is below 3 · 2^(2uf+2) <= 3 · 2^42; the diffuse product colour · (N·L) is at most
 //    2^(cf+uf) <= 2^36, and a colour term light · (diffuse + specular) at most
 //    2^(cf+7) · (2^cf + 2^31) < 2^56 (the specular ROM holds 32-bit entries).
 #pragma once
