@@ -65,6 +65,13 @@ struct WidthRange {
     if (v >= lo && v <= hi) return v;
     return fitWidth(v, width, mode, ovf);
   }
+  // fit() in a register type T (std::int64_t: a width of at most 64 bits, so the bounds and
+  // every in-range value are T's; the rare overflow goes through fitWidth).
+  template <typename T>
+  T fitT(T v, OverflowMode mode, OverflowCounter& ovf) const {
+    if (v >= T(lo) && v <= T(hi)) return v;
+    return T(fitWidth(v, width, mode, ovf));
+  }
 };
 
 // v · 2^-shift rounded with the given mode (shift >= 0); shift <= 0 multiplies exactly.
@@ -113,42 +120,70 @@ inline T shiftRoundFitR(T v, int shift) {
   else return shiftRoundT<T>(v, shift, R);
 }
 
+// The quotient a / d of non-negative a < 2^62 and positive d < 2^62, from the estimate qf of
+// a / d, rounded with r and given the sign of a negative quotient when ng. A quotient below
+// 2^50 comes from the host's floating-point unit, corrected by its remainder (faster than a
+// 64-bit integer divide): an estimate that carries at most 4 roundings of 2^-53 is off by at
+// most about 4 · 2^-53 · 2^50 = 1/2 there, so its floor is off by at most one.
+[[gnu::always_inline]] inline std::int64_t divRoundFromEstimate(long long a, long long d, bool ng, double qf,
+                                                                Rounding r) {
+  long long q, rem;
+  if (qf < 0x1p50) {
+    q = (long long)qf;
+    rem = a - q * d;
+    if (rem < 0) {
+      --q;
+      rem += d;
+    } else if (rem >= d) {
+      ++q;
+      rem -= d;
+    }
+  } else {
+    q = a / d;
+    rem = a - q * d;
+  }
+  if (r != Rounding::Truncate) {
+    const long long twice = 2 * rem;
+    if (twice > d || (twice == d && (r == Rounding::Nearest || (q & 1)))) ++q;
+  }
+  return ng ? -q : q;
+}
+
+// divRound's 64-bit path: num / den (den != 0) rounded with r, for |num|, |den| < 2^62 (so
+// that the negations and 2·rem cannot overflow). The datapaths whose widths keep both
+// operands in that range (pixel_datapath.cpp) call it directly; divRound calls it for them.
+// Always inlined: the rounding mode is then a constant of the caller's inner loop.
+[[gnu::always_inline]] inline std::int64_t divRound64(std::int64_t num, std::int64_t den, Rounding r) {
+  long long n = num, d = den;
+  if (d < 0) {
+    n = -n;
+    d = -d;
+  }
+  const bool ng = n < 0;
+  const long long a = ng ? -n : n;
+  return divRoundFromEstimate(a, d, ng, double(a) / double(d), r);  // 3 roundings
+}
+
+// divRound64 by a constant divisor den whose reciprocal invAbsDen = 1.0 / double(|den|) the
+// caller computed once: the same quotient, the host's multiplier instead of its divider
+// (4 roundings: |num|, |den|, the reciprocal and the product).
+[[gnu::always_inline]] inline std::int64_t divRound64ByReciprocal(std::int64_t num, std::int64_t den, double invAbsDen,
+                                                                  Rounding r) {
+  long long n = num, d = den;
+  if (d < 0) {
+    n = -n;
+    d = -d;
+  }
+  const bool ng = n < 0;
+  const long long a = ng ? -n : n;
+  return divRoundFromEstimate(a, d, ng, double(a) * invAbsDen, r);
+}
+
 // Integer quotient num / den (den != 0) with the given rounding (Truncate = toward zero).
 inline i128 divRound(i128 num, i128 den, Rounding r) {
   constexpr i128 k63 = i128(1) << 62;
-  if (num > -k63 && num < k63 && den > -k63 && den < k63) {  // 64-bit fast path, same result
-    long long n = (long long)num, d = (long long)den;
-    if (d < 0) {
-      n = -n;
-      d = -d;
-    }
-    const bool ng = n < 0;
-    const long long a = ng ? -n : n;
-    long long q, rem;
-    // A quotient below 2^50 comes from the host's floating-point divider, corrected by its
-    // remainder (faster than a 64-bit integer divide): the double quotient carries at most
-    // 4 roundings of 2^-53, an error below 1/2 there, so its floor is off by at most one.
-    const double qf = double(a) / double(d);
-    if (qf < 0x1p50) {
-      q = (long long)qf;
-      rem = a - q * d;
-      if (rem < 0) {
-        --q;
-        rem += d;
-      } else if (rem >= d) {
-        ++q;
-        rem -= d;
-      }
-    } else {
-      q = a / d;
-      rem = a - q * d;
-    }
-    if (r != Rounding::Truncate) {
-      const long long twice = 2 * rem;
-      if (twice > d || (twice == d && (r == Rounding::Nearest || (q & 1)))) ++q;
-    }
-    return ng ? -q : q;
-  }
+  if (num > -k63 && num < k63 && den > -k63 && den < k63)  // 64-bit fast path, same result
+    return divRound64(std::int64_t(num), std::int64_t(den), r);
   if (den < 0) {
     num = -num;
     den = -den;
@@ -163,6 +198,16 @@ inline i128 divRound(i128 num, i128 den, Rounding r) {
   }
   return neg ? -q : q;
 }
+
+// divRound and shl in the register type T of a datapath: i128 in general, std::int64_t where
+// the datapath's widths keep |num|, |den| < 2^62 (divRound64's domain) and v · 2^n below 2^63.
+template <typename T>
+[[gnu::always_inline]] inline T divRoundT(T num, T den, Rounding r) {
+  if constexpr (sizeof(T) == sizeof(std::int64_t)) return divRound64(num, den, r);
+  else return divRound(num, den, r);
+}
+template <typename T>
+inline T shlT(T v, int n) { return v * (T(1) << n); }
 
 // Quantises a real number to raw = round(v · 2^scaleBits) (half away from zero, so that
 // quantise(-v) == -quantise(v): a plane and its opposite get exactly opposite

@@ -25,9 +25,11 @@ class SqrtExtractor {
     const std::uint64_t m = std::uint64_t(n);
     if (m == 0) return 0;
     std::uint64_t x = std::uint64_t(std::sqrt(double(m)));
+    // x <= 2^32 - 1, so x² fits 64 bits; (x + 1)² does too unless x = 2^32 - 1, where it is
+    // 2^64 > m and the root is x.
     if (x > 0xFFFFFFFFull) x = 0xFFFFFFFFull;
-    while ((unsigned __int128)x * x > m) --x;
-    while ((unsigned __int128)(x + 1) * (x + 1) <= m) ++x;
+    while (x * x > m) --x;
+    while (x < 0xFFFFFFFFull && (x + 1) * (x + 1) <= m) ++x;
     return x;
   }
 
