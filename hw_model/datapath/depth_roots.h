@@ -44,33 +44,55 @@ inline i128 clampDepth(i128 z, const HwConfig& cfg, OverflowCounters& ovf) {
 
 // depthRoots for the rounding mode R and variant V of the configuration (cfg.rounding ==
 // R, cfg.depth_variant == V): the pixel datapath's inner loop is instantiated per mode.
-template <Rounding R, DepthVariant V>
-inline DepthRoots depthRootsT(const PrimitiveSetup& s, const HwConfig& cfg, i128 b, i128 c, i128 sq,
-                              OverflowCounters& ovf) {
+// T is the register type of b, c, s and the depths: i128 in general; std::int64_t where the
+// widths fit it (the same values, cheaper on the host), which the caller guarantees:
+//   |b|, |c|, |s| <= 2^value_bits, so |q| < 2^(value_bits+1), and the dividends q · 2^Fz
+//   and c · 2^Fz stay below 2^62 (divRound64's domain) when value_bits + 1 + Fz <= 62; a
+//   is a value_bits register; 0 <= z0 <= 2^Fz and zShift <= Fz / 2 (setup); the clamped
+//   depths are depth_bits <= 40 wide. The reciprocal variant's product (-b ∓ s) · recipM,
+//   up to value_bits + recip_bits + 1 <= 89 bits, is taken in i128 from 64-bit factors.
+// invAbsA = 1.0 / |a| (a != 0), for T = std::int64_t: the stable variant's q / a, a constant
+// divisor, then costs the host a multiplication (divRound64ByReciprocal, the same quotient).
+template <Rounding R, DepthVariant V, typename T = i128>
+inline DepthRoots depthRootsT(const PrimitiveSetup& s, const HwConfig& cfg, T b, T c, T sq, OverflowCounters& ovf,
+                              double invAbsA = 0) {
   // A root t (depth format, t units) as window depth z = z0 + t 2^-zShift.
-  const i128 hi = (i128(1) << (cfg.depth_bits - 1)) - 1;
-  const auto windowDepth = [&](i128 t) {
-    const i128 z = s.z0 + shiftRoundR<R>(clampDepth(t, cfg, ovf), s.zShift);
-    return z > hi ? hi : (z < -hi - 1 ? -hi - 1 : z);
+  const T hi = (T(1) << (cfg.depth_bits - 1)) - 1, lo = -hi - 1;
+  const auto windowDepth = [&](auto t) {  // t: T, or i128 for the reciprocal variant's product
+    T tc;                                 // clampDepth(t, cfg, ovf)
+    if (t > hi) {
+      ++ovf.depth_clamps;
+      tc = hi;
+    } else if (t < lo) {
+      ++ovf.depth_clamps;
+      tc = lo;
+    } else {
+      tc = T(t);
+    }
+    const T z = T(s.z0) + shiftRoundR<R>(tc, s.zShift);
+    return std::int64_t(z > hi ? hi : (z < lo ? lo : z));
   };
   DepthRoots r;
   const int Fz = cfg.depth_frac_bits;
   if constexpr (V == DepthVariant::Stable) {
-    const i128 q = b >= 0 ? -(b + sq) : -(b - sq);
+    const T q = b >= 0 ? -(b + sq) : -(b - sq);
     if (q == 0) {  // b = 0 and Δ = 0
       if (s.a != 0) {
         r.count = 1;
-        r.z[0] = s.z0;
+        r.z[0] = std::int64_t(s.z0);
       }
       return r;
     }
-    if (s.a == 0) {
+    const T a = T(s.a);
+    if (a == 0) {
       r.count = 1;
-      r.z[0] = std::int64_t(windowDepth(divRound(shl(c, Fz), q, R)));
+      r.z[0] = windowDepth(divRoundT<T>(shlT<T>(c, Fz), q, R));
       return r;
     }
-    std::int64_t z1 = std::int64_t(windowDepth(divRound(shl(q, Fz), s.a, R)));
-    std::int64_t z2 = std::int64_t(windowDepth(divRound(shl(c, Fz), q, R)));
+    std::int64_t z1;
+    if constexpr (sizeof(T) == sizeof(std::int64_t)) z1 = windowDepth(divRound64ByReciprocal(shlT<T>(q, Fz), a, invAbsA, R));
+    else z1 = windowDepth(divRound(shlT<T>(q, Fz), a, R));
+    std::int64_t z2 = windowDepth(divRoundT<T>(shlT<T>(c, Fz), q, R));
     if (z2 < z1) std::swap(z1, z2);
     r.count = 2;
     r.z[0] = z1;
@@ -79,8 +101,9 @@ inline DepthRoots depthRootsT(const PrimitiveSetup& s, const HwConfig& cfg, i128
   } else {
     if (!s.recipValid) return r;
     const int sh = s.recipShift - Fz;
-    std::int64_t z1 = std::int64_t(windowDepth(shiftRoundR<R>((-b - sq) * s.recipM, sh)));
-    std::int64_t z2 = std::int64_t(windowDepth(shiftRoundR<R>((-b + sq) * s.recipM, sh)));
+    const i128 m = i128(T(s.recipM));
+    std::int64_t z1 = windowDepth(shiftRoundR<R>(i128(-b - sq) * m, sh));
+    std::int64_t z2 = windowDepth(shiftRoundR<R>(i128(-b + sq) * m, sh));
     if (z2 < z1) std::swap(z1, z2);
     r.count = 2;
     r.z[0] = z1;

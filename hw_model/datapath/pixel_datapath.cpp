@@ -7,40 +7,94 @@
 
 namespace qacc {
 
-PixelDatapath::PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg)
-    : s_(s), cfg_(cfg), delta_(s.delta, cfg.interp_frac_bits, cfg.interp_acc_bits),
-      c_(s.c, cfg.interp_frac_bits, cfg.interp_acc_bits), b_(s.b), facetZ_(s.facetZ) {
-  for (const PlaneSetup& p : s.planes) {
-    h_.emplace_back(p.h);
-    zk_.emplace_back(p.zk);
-  }
-  hv_.resize(s.planes.size());
-  zkv_.resize(s.planes.size());
+namespace {
+
+// Whether primitive s's quadric datapath fits 64-bit host registers (depthRootsT's T, and
+// √Δ before it), so that evaluateSpan computes it in std::int64_t — the same values:
+//  - b, c and √Δ are value_bits + 1 registers (|x| <= 2^value_bits); the stable variant's
+//    dividends q · 2^Fz and c · 2^Fz stay below 2^62, divRound64's domain, when
+//    value_bits + 1 + depth_frac_bits <= 62 (the default: 32 + 1 + 28 = 61);
+//  - the extractor's root sd < 2^H, H = ceil(delta_bits / 2) (Δ <= 2^delta_bits - 1), scaled
+//    by 2^-(ed - e): a left shift by k = e - ed stays below 2^63 when H + k <= 62, a right
+//    shift (and its rounding half 2^(shift-1)) is exact in 64 bits up to shift 62;
+//  - the depth unit's constants: a (a value_bits register), recipM (a recip_bits mantissa),
+//    0 <= z0 <= 2^Fz and 0 <= zShift <= Fz / 2 from setup, checked here all the same, so
+//    that z0 + t 2^-zShift of a clamped t (depth_bits <= 40) cannot leave 64 bits.
+bool fits64(const PrimitiveSetup& s, const HwConfig& cfg) {
+  if (cfg.value_bits + 1 + cfg.depth_frac_bits > 62) return false;
+  const int H = (cfg.delta_bits + 1) / 2, shift = s.ed - s.e;
+  if (shift < 0 ? H - shift > 62 : shift > 62) return false;
+  const i128 z0Max = i128(1) << 41, kMax = i128(1) << 62;
+  return s.z0 >= -z0Max && s.z0 <= z0Max && s.zShift >= 0 && s.zShift <= 20 && s.a > -kMax && s.a < kMax &&
+         s.recipM > -kMax && s.recipM < kMax;
+}
+
+}  // namespace
+
+PixelDatapath::PixelDatapath(const HwConfig& cfg) : cfg_(cfg) {
   hRange_ = WidthRange(cfg.clip_bits + cfg.interp_frac_bits + 2);
   valueRange_ = WidthRange(cfg.value_bits + 1);
   deltaRange_ = WidthRange(cfg.delta_bits + 1);
   accRange_ = WidthRange(cfg.interp_acc_bits);
   depthHi_ = (i128(1) << (cfg.depth_bits - 1)) - 1;
   depthLo_ = -depthHi_ - 1;
-  const bool stable = cfg.depth_variant == DepthVariant::Stable;
-  switch (cfg.rounding) {
+}
+
+PixelDatapath::PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg) : PixelDatapath(cfg) { load(s); }
+
+void PixelDatapath::load(const PrimitiveSetup& s) {
+  s_ = &s;
+  delta_ = QuadraticInterpolator(s.delta, cfg_.interp_frac_bits, cfg_.interp_acc_bits);
+  c_ = QuadraticInterpolator(s.c, cfg_.interp_frac_bits, cfg_.interp_acc_bits);
+  b_ = LinearInterpolator(s.b);
+  facetZ_ = LinearInterpolator(s.facetZ);
+  h_.clear();
+  zk_.clear();
+  for (const PlaneSetup& p : s.planes) {
+    h_.emplace_back(p.h);
+    zk_.emplace_back(p.zk);
+  }
+  hv_.resize(s.planes.size());
+  zkv_.resize(s.planes.size());
+  narrow_ = !s.facet && fits64(s, cfg_);
+  invAbsA_ = s.a != 0 ? 1.0 / double(s.a < 0 ? -s.a : s.a) : 0.0;
+  const bool stable = cfg_.depth_variant == DepthVariant::Stable;
+  switch (cfg_.rounding) {
     case Rounding::Truncate:
-      evalFloored_ = stable ? &PixelDatapath::evaluateFloored<Rounding::Truncate, DepthVariant::Stable>
-                            : &PixelDatapath::evaluateFloored<Rounding::Truncate, DepthVariant::Reciprocal>;
+      stable ? choosePaths<Rounding::Truncate, DepthVariant::Stable>()
+             : choosePaths<Rounding::Truncate, DepthVariant::Reciprocal>();
       break;
     case Rounding::Nearest:
-      evalFloored_ = stable ? &PixelDatapath::evaluateFloored<Rounding::Nearest, DepthVariant::Stable>
-                            : &PixelDatapath::evaluateFloored<Rounding::Nearest, DepthVariant::Reciprocal>;
+      stable ? choosePaths<Rounding::Nearest, DepthVariant::Stable>()
+             : choosePaths<Rounding::Nearest, DepthVariant::Reciprocal>();
       break;
     case Rounding::NearestEven:
-      evalFloored_ = stable ? &PixelDatapath::evaluateFloored<Rounding::NearestEven, DepthVariant::Stable>
-                            : &PixelDatapath::evaluateFloored<Rounding::NearestEven, DepthVariant::Reciprocal>;
+      stable ? choosePaths<Rounding::NearestEven, DepthVariant::Stable>()
+             : choosePaths<Rounding::NearestEven, DepthVariant::Reciprocal>();
       break;
   }
 }
 
-void PixelDatapath::startSpan(int u, int v) {
-  if (s_.facet) {
+template <Rounding R, DepthVariant V>
+void PixelDatapath::choosePaths() {
+  using I64 = std::int64_t;
+  evalFloored_ = &PixelDatapath::evaluateFloored<R, V, Shape::Any, i128>;
+  if (s_->facet)  // no rounding, no depth unit, no quadric registers: one instance serves all modes
+    evalSpan_ = &PixelDatapath::evaluateSpanT<Rounding::Nearest, DepthVariant::Stable, Shape::Facet, i128>;
+  else if (s_->solid)
+    evalSpan_ = narrow_ ? &PixelDatapath::evaluateSpanT<R, V, Shape::Solid, I64>
+                        : &PixelDatapath::evaluateSpanT<R, V, Shape::Solid, i128>;
+  else
+    evalSpan_ = narrow_ ? &PixelDatapath::evaluateSpanT<R, V, Shape::Surface, I64>
+                        : &PixelDatapath::evaluateSpanT<R, V, Shape::Surface, i128>;
+}
+
+// The span loop's parts are inlined into it (evaluateSpanT), so that nothing is called per pixel.
+template <PixelDatapath::Shape S>
+[[gnu::always_inline]] inline void PixelDatapath::startSpanT(int u, int v) {
+  const bool facet = S == Shape::Facet || (S == Shape::Any && s_->facet);
+  const bool solid = S == Shape::Solid || (S == Shape::Any && s_->solid);
+  if (facet) {
     facetZ_.start(u, v);
   } else {
     delta_.start(u, v);
@@ -49,12 +103,15 @@ void PixelDatapath::startSpan(int u, int v) {
   }
   for (std::size_t i = 0; i < h_.size(); ++i) {
     h_[i].start(u, v);
-    if (s_.solid) zk_[i].start(u, v);
+    if (solid) zk_[i].start(u, v);
   }
 }
 
-void PixelDatapath::stepRight() {
-  if (s_.facet) {
+template <PixelDatapath::Shape S>
+[[gnu::always_inline]] inline void PixelDatapath::stepRightT() {
+  const bool facet = S == Shape::Facet || (S == Shape::Any && s_->facet);
+  const bool solid = S == Shape::Solid || (S == Shape::Any && s_->solid);
+  if (facet) {
     facetZ_.stepRight();
   } else {
     delta_.stepRight();
@@ -63,54 +120,67 @@ void PixelDatapath::stepRight() {
   }
   for (std::size_t i = 0; i < h_.size(); ++i) {
     h_[i].stepRight();
-    if (s_.solid) zk_[i].stepRight();
+    if (solid) zk_[i].stepRight();
   }
 }
 
+void PixelDatapath::startSpan(int u, int v) { startSpanT<Shape::Any>(u, v); }
+void PixelDatapath::stepRight() { stepRightT<Shape::Any>(); }
+
 PixelOutcome PixelDatapath::evaluate(OverflowCounters& ovf) { return (this->*evalFloored_)(ovf); }
 
-template <Rounding R, DepthVariant V>
-PixelOutcome PixelDatapath::evaluateFloored(OverflowCounters& ovf) {
-  PixelOutcome o = evaluateUnfloored<R, V>(ovf);
+template <Rounding R, DepthVariant V, PixelDatapath::Shape S, typename T>
+void PixelDatapath::evaluateSpanT(int u, int v, int n, PixelOutcome* out, OverflowCounters& ovf) {
+  startSpanT<S>(u, v);
+  for (int i = 0; i < n; ++i) {
+    out[i] = evaluateFloored<R, V, S, T>(ovf);
+    stepRightT<S>();
+  }
+}
+
+template <Rounding R, DepthVariant V, PixelDatapath::Shape S, typename T>
+[[gnu::always_inline]] inline PixelOutcome PixelDatapath::evaluateFloored(OverflowCounters& ovf) {
+  PixelOutcome o = evaluateUnfloored<R, V, S, T>(ovf);
   // The depth floor (PrimitiveSetup::zFloor): one comparator and a multiplexer after the
   // depth unit, so that the floor bounds every depth of the primitive (hierarchical Z).
-  if (o.hit && o.z < s_.zFloor) {
+  if (o.hit && o.z < s_->zFloor) {
     ++ovf.depth_floor_clamps;
-    o.z = s_.zFloor;
+    o.z = s_->zFloor;
   }
   return o;
 }
 
-template <Rounding R, DepthVariant V>
-PixelOutcome PixelDatapath::evaluateUnfloored(OverflowCounters& ovf) {
+template <Rounding R, DepthVariant V, PixelDatapath::Shape S, typename T>
+[[gnu::always_inline]] inline PixelOutcome PixelDatapath::evaluateUnfloored(OverflowCounters& ovf) {
+  const PrimitiveSetup& s = *s_;
+  const bool facet = S == Shape::Facet || (S == Shape::Any && s.facet);
+  const bool solid = S == Shape::Solid || (S == Shape::Any && s.solid);
   PixelOutcome o;
   const int Fz = cfg_.depth_frac_bits, Fi = cfg_.interp_frac_bits;
-  const i128 one = i128(1) << Fz;
+  const std::int64_t one = std::int64_t(1) << Fz;
   const int np = int(h_.size());
   o.clipPasses = ClipTest::passes(np, cfg_.clip_evaluators);
   for (int i = 0; i < np; ++i) hv_[std::size_t(i)] = hRange_.fit(h_[std::size_t(i)].raw(), cfg_.overflow, ovf.clip);
   // clampDepth's result, its bounds precomputed (the call only when a clamp happens).
   const auto depth = [&](i128 z) { return z >= depthLo_ && z <= depthHi_ ? z : clampDepth(z, cfg_, ovf); };
 
-  if (s_.facet) {
+  if (facet) {
     const i128 z = depth(facetZ_.raw() >> Fi);
     o.candidate = true;
-    if (z >= 0 && z <= one && ClipTest::keptByAll(s_.planes, hv_.data(), z, Fz)) {
+    if (z >= 0 && z <= one && ClipTest::keptByAll(s.planes, hv_.data(), z, Fz)) {
       o.hit = true;
       o.z = z;
     }
     return o;
   }
 
-  const i128 b = valueRange_.fit(b_.raw() >> Fi, cfg_.overflow, ovf.interpolator);
-  const i128 c = valueRange_.fit(c_.raw() >> Fi, cfg_.overflow, ovf.interpolator);
-  if (s_.solid) {
+  const T b = T(valueRange_.fit(b_.raw() >> Fi, cfg_.overflow, ovf.interpolator));
+  const T c = T(valueRange_.fit(c_.raw() >> Fi, cfg_.overflow, ovf.interpolator));
+  if (solid) {
     for (int i = 0; i < np; ++i)
-      zkv_[std::size_t(i)] = s_.planes[std::size_t(i)].zdir != 0
-                                 ? depth(zk_[std::size_t(i)].raw() >> Fi)
-                                 : 0;
+      zkv_[std::size_t(i)] = s.planes[std::size_t(i)].zdir != 0 ? depth(zk_[std::size_t(i)].raw() >> Fi) : 0;
     o.clipPasses += 1;
-    const CapDecision d = CapSelect::decide(s_, cfg_, zkv_.data(), hv_.data(), b, c);
+    const CapDecision d = CapSelect::decide(s, cfg_, zkv_.data(), hv_.data(), b, c);
     if (d.empty) {
       o.candidate = d.plane >= 0;
       return o;
@@ -128,12 +198,12 @@ PixelOutcome PixelDatapath::evaluateUnfloored(OverflowCounters& ovf) {
   if (delta < 0) return o;
   o.candidate = true;
   const i128 din = deltaRange_.fit(delta, cfg_.overflow, ovf.sqrt);
-  const i128 sd = i128(SqrtExtractor::compute((unsigned __int128)din));
-  const i128 sq = valueRange_.fit(shiftRoundR<R>(sd, s_.ed - s_.e), cfg_.overflow, ovf.sqrt);
-  const DepthRoots r = depthRootsT<R, V>(s_, cfg_, b, c, sq, ovf);
+  const T sd = T(SqrtExtractor::compute((unsigned __int128)din));
+  const T sq = valueRange_.fitT<T>(shiftRoundR<R>(sd, s.ed - s.e), cfg_.overflow, ovf.sqrt);
+  const DepthRoots r = depthRootsT<R, V, T>(s, cfg_, b, c, sq, ovf, invAbsA_);
   for (int k = 0; k < r.count; ++k) {
-    const i128 z = r.z[k];
-    if (z >= 0 && z <= one && ClipTest::keptByAll(s_.planes, hv_.data(), z, Fz)) {
+    const std::int64_t z = r.z[k];
+    if (z >= 0 && z <= one && ClipTest::keptByAll(s.planes, hv_.data(), z, Fz)) {
       o.hit = true;
       o.z = z;
       return o;

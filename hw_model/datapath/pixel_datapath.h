@@ -38,12 +38,31 @@ struct FixedDepthInterval {
 
 class PixelDatapath {
  public:
-  PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg);
+  // A pipeline of the configuration with no primitive yet: load() one before use.
+  explicit PixelDatapath(const HwConfig& cfg);
+  PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg);  // PixelDatapath(cfg), then load(s)
+  // The setup unit loads the pipeline with a primitive: its interpolator seeds and planes.
+  // The storage is reused, so an engine keeps one datapath per thread and loads every
+  // (primitive, tile) into it without allocating. `s` must outlive its use here.
+  void load(const PrimitiveSetup& s);
   void startSpan(int u, int v);
   void stepRight();
   // At the current position; a visible depth is never below the primitive's depth floor
   // (PrimitiveSetup::zFloor): one nearer is raised to it and counted (depth_floor_clamps).
+  // The straightforward datapath, as the hardware computes it: every register 128 bits on
+  // the host, the primitive's kind (facet, solid) tested at every pixel.
   PixelOutcome evaluate(OverflowCounters& ovf);
+  // The n pixels (u, v), (u + 1, v), ... of a span: out[i] is what startSpan(u, v), then i
+  // stepRight() and evaluate() give, bit for bit, counters included; the interpolators end
+  // at (u + n, v). The engines' path: chosen per primitive (load) — its kind, and 64-bit
+  // host registers for b, c, √Δ and the depth unit where the configuration's widths and the
+  // primitive's exponents provably fit them (fits64, pixel_datapath.cpp) — so the inner loop
+  // tests neither; tests check it against evaluate() (tests/hw_model/test_pixel_datapath_fast.cpp).
+  void evaluateSpan(int u, int v, int n, PixelOutcome* out, OverflowCounters& ovf) {
+    (this->*evalSpan_)(u, v, n, out, ovf);
+  }
+  // Whether evaluateSpan runs this primitive in 64-bit host registers (for tests).
+  bool narrowHostPath() const { return narrow_; }
   // For a solid quadric (not a facet): {f <= 0} ∩ clip polyhedron ∩ [0, 1] at the current
   // position as up to 2 intervals of positive length, ascending — what a CSG method needs
   // of each operand; the fixed-point form of raster/pixel/solid_intervals.h, from the same
@@ -51,14 +70,29 @@ class PixelDatapath {
   int solidIntervals(OverflowCounters& ovf, FixedDepthInterval out[2]);
 
  private:
+  // The primitive's kind as a template constant of the host paths; Any reads it per pixel.
+  enum class Shape { Any, Facet, Surface, Solid };
   // evaluate() for the configured rounding mode R and depth variant V, chosen once per
-  // primitive (evalFloored_): the per-pixel path tests neither.
-  template <Rounding R, DepthVariant V>
+  // primitive (evalFloored_ and evalSpan_): the per-pixel path tests neither. T is the host
+  // register type of b, c, √Δ and the depth unit (i128, or std::int64_t where it fits).
+  template <Rounding R, DepthVariant V, Shape S, typename T>
   PixelOutcome evaluateFloored(OverflowCounters& ovf);
-  template <Rounding R, DepthVariant V>
+  template <Rounding R, DepthVariant V, Shape S, typename T>
   PixelOutcome evaluateUnfloored(OverflowCounters& ovf);
+  template <Rounding R, DepthVariant V, Shape S, typename T>
+  void evaluateSpanT(int u, int v, int n, PixelOutcome* out, OverflowCounters& ovf);
+  template <Shape S>
+  void startSpanT(int u, int v);
+  template <Shape S>
+  void stepRightT();
+  template <Rounding R, DepthVariant V>
+  void choosePaths();
+  using SpanFn = void (PixelDatapath::*)(int, int, int, PixelOutcome*, OverflowCounters&);
   PixelOutcome (PixelDatapath::*evalFloored_)(OverflowCounters&) = nullptr;
-  const PrimitiveSetup& s_;
+  SpanFn evalSpan_ = nullptr;
+  bool narrow_ = false;
+  double invAbsA_ = 0;  // 1 / |a| for the 64-bit host path's division by a (depthRootsT)
+  const PrimitiveSetup* s_ = nullptr;
   const HwConfig& cfg_;
   QuadraticInterpolator delta_, c_;
   LinearInterpolator b_, facetZ_;

@@ -21,7 +21,7 @@ int PixelDatapath::solidIntervals(OverflowCounters& ovf, FixedDepthInterval out[
 
   FixedDepthBound lo{0, kView}, hi{i128(1) << Fz, kView};
   for (int i = 0; i < np; ++i) {
-    const PlaneSetup& p = s_.planes[std::size_t(i)];
+    const PlaneSetup& p = s_->planes[std::size_t(i)];
     if (p.zdir == 0) {
       if (!ClipTest::keeps(p, hv_[std::size_t(i)], 0, Fz)) return 0;
       continue;
@@ -44,27 +44,27 @@ int PixelDatapath::solidIntervals(OverflowCounters& ovf, FixedDepthInterval out[
   };
   const i128 delta = delta_.output(cfg_.overflow, ovf.interpolator);
   if (delta < 0) {
-    if (s_.a < 0) add(ninf, pinf);  // no root and f < 0 everywhere on the line
+    if (s_->a < 0) add(ninf, pinf);  // no root and f < 0 everywhere on the line
   } else {
     const i128 din = fitWidth(delta, cfg_.delta_bits + 1, cfg_.overflow, ovf.sqrt);
     const i128 sd = i128(SqrtExtractor::compute((unsigned __int128)din));
-    const i128 sq = fitWidth(shiftRound(sd, s_.ed - s_.e, cfg_.rounding), vw, cfg_.overflow, ovf.sqrt);
-    const DepthRoots r = depthRoots(s_, cfg_, b, c, sq, ovf);
+    const i128 sq = fitWidth(shiftRound(sd, s_->ed - s_->e, cfg_.rounding), vw, cfg_.overflow, ovf.sqrt);
+    const DepthRoots r = depthRoots(*s_, cfg_, b, c, sq, ovf);
     if (r.count == 2) {
-      if (s_.a > 0) {
+      if (s_->a > 0) {
         add(r.z[0], r.z[1]);
       } else {
         add(ninf, r.z[0]);
         add(r.z[1], pinf);
       }
     } else if (r.count == 1) {
-      if (s_.a == 0) {  // linear along the line: 2 b z + c <= 0
+      if (s_->a == 0) {  // linear along the line: 2 b z + c <= 0
         if (b > 0) add(ninf, r.z[0]);
         else add(r.z[0], pinf);
-      } else if (s_.a < 0) {
+      } else if (s_->a < 0) {
         add(ninf, pinf);  // double root of a concave f: f <= 0 everywhere
       }
-    } else if (s_.a == 0 && b == 0 && c <= 0) {
+    } else if (s_->a == 0 && b == 0 && c <= 0) {
       add(ninf, pinf);
     }
   }

@@ -74,6 +74,10 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
 #pragma omp parallel num_threads(nt) reduction(+ : distinct)
   {
     ZBufferMemory zb(kTile, kTile);
+    // One pixel datapath per thread, loaded with each (primitive, tile) in turn, and the
+    // outcomes of one span (at most a tile wide) before its Z tests.
+    PixelDatapath pp(cfg);
+    PixelOutcome outcomes[kTile];
 #pragma omp for schedule(dynamic, 1)
     for (int t = 0; t < ntiles; ++t) {
       const ScreenBox tile = bins.tile(t);
@@ -93,14 +97,13 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
           continue;
         }
         const PrimitiveSetup& s = fs.setups[std::size_t(k)];
-        PixelDatapath pp(s, cfg);
-        // The pixels [xa, xb) of row y, through the pipelines and the Z test.
+        pp.load(s);
+        // The pixels [xa, xb) of row y (within the tile), through the pipelines and the Z test.
         const auto draw = [&](int y, int xa, int xb) {
-          pp.startSpan(xa - s.x0, y - s.y0);
+          pp.evaluateSpan(xa - s.x0, y - s.y0, xb - xa, outcomes, ovf);
           for (int x = xa; x < xb; ++x) {
             ++px.tested;
-            const PixelOutcome o = pp.evaluate(ovf);
-            pp.stepRight();
+            const PixelOutcome& o = outcomes[x - xa];
             px.clip_passes += std::uint64_t(o.clipPasses);
             if (!o.hit) {
               px.clipped += o.candidate;

@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include <algorithm>
+
 #include "hw_model/datapath/pixel_datapath.h"
 
 namespace qacc {
@@ -32,28 +34,36 @@ PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const Hw
   }
   for (std::size_t i = 0; i < std::size_t(n); ++i) tr.first[i + 1] += tr.first[i];
   tr.pixels.resize(tr.first.back());
-  // The datapath along every span.
-#pragma omp parallel for schedule(dynamic, 4) num_threads(nt)
-  for (int i = 0; i < n; ++i) {
-    const PrimitiveSetup& s = setups[std::size_t(i)];
-    if (!s.visible) continue;
-    TracedPixel* out = tr.pixels.data() + tr.first[std::size_t(i)];
-    PixelDatapath pp(s, cfg);
-    for (const RowSpans& r : tr.rows[std::size_t(i)]) {
-      const int y = r.y;
-      const Span* sp = r.s;
-      for (int k = 0; k < r.n; ++k) {
-        pp.startSpan(sp[k].x0 - s.x0, y - s.y0);
-        for (int x = sp[k].x0; x < sp[k].x1; ++x) {
-          const PixelOutcome o = pp.evaluate(ovf[std::size_t(i)]);
-          pp.stepRight();
-          TracedPixel& t = *out++;
-          t.z = std::int64_t(o.z);
-          t.cap = std::int16_t(o.cap);
-          t.hit = o.hit;
-          t.candidate = o.candidate;
-          t.clipPasses = std::uint16_t(o.clipPasses);
-        }
+  // The datapath along every span: one per thread, loaded with each primitive, its spans
+  // evaluated in pieces of up to kChunk pixels.
+  constexpr int kChunk = 64;
+#pragma omp parallel num_threads(nt)
+  {
+    PixelDatapath pp(cfg);
+    PixelOutcome outcomes[kChunk];
+#pragma omp for schedule(dynamic, 4)
+    for (int i = 0; i < n; ++i) {
+      const PrimitiveSetup& s = setups[std::size_t(i)];
+      if (!s.visible) continue;
+      TracedPixel* out = tr.pixels.data() + tr.first[std::size_t(i)];
+      pp.load(s);
+      for (const RowSpans& r : tr.rows[std::size_t(i)]) {
+        const int y = r.y;
+        const Span* sp = r.s;
+        for (int k = 0; k < r.n; ++k)
+          for (int xa = sp[k].x0; xa < sp[k].x1; xa += kChunk) {
+            const int m = std::min(kChunk, sp[k].x1 - xa);
+            pp.evaluateSpan(xa - s.x0, y - s.y0, m, outcomes, ovf[std::size_t(i)]);
+            for (int j = 0; j < m; ++j) {
+              const PixelOutcome& o = outcomes[j];
+              TracedPixel& t = *out++;
+              t.z = std::int64_t(o.z);
+              t.cap = std::int16_t(o.cap);
+              t.hit = o.hit;
+              t.candidate = o.candidate;
+              t.clipPasses = std::uint16_t(o.clipPasses);
+            }
+          }
       }
     }
   }
