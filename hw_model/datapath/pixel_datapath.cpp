@@ -20,13 +20,32 @@ namespace {
 //  - the depth unit's constants: a (a value_bits register), recipM (a recip_bits mantissa),
 //    0 <= z0 <= 2^Fz and 0 <= zShift <= Fz / 2 from setup, checked here all the same, so
 //    that z0 + t 2^-zShift of a clamped t (depth_bits <= 40) cannot leave 64 bits.
+bool interpolatorsFit64(const PrimitiveSetup& s);
+
 bool fits64(const PrimitiveSetup& s, const HwConfig& cfg) {
   if (cfg.value_bits + 1 + cfg.depth_frac_bits > 62) return false;
   const int H = (cfg.delta_bits + 1) / 2, shift = s.ed - s.e;
   if (shift < 0 ? H - shift > 62 : shift > 62) return false;
   const i128 z0Max = i128(1) << 41, kMax = i128(1) << 62;
   return s.z0 >= -z0Max && s.z0 <= z0Max && s.zShift >= 0 && s.zShift <= 20 && s.a > -kMax && s.a < kMax &&
-         s.recipM > -kMax && s.recipM < kMax;
+         s.recipM > -kMax && s.recipM < kMax && interpolatorsFit64(s);
+}
+
+// The b and c interpolators' accumulators in 64-bit registers: every value they take at a
+// position of the box, u in [0, x1 - x0] (the last step of a span lands on x1 - x0) and v in
+// [0, y1 - y0), every forward difference there and 2A are below 2^62 in magnitude (the sums of
+// the coefficients' magnitudes times the powers of the box's sides bound them; at most about
+// 2^104 for 74-bit coefficients on a 2^15-pixel side, so the bound itself fits i128). The
+// 64-bit path runs only on spans within the box (evaluateSpanT).
+bool interpolatorsFit64(const PrimitiveSetup& s) {
+  const i128 U = s.x1 - s.x0, V = s.y1 - s.y0, lim = i128(1) << 62;
+  const auto mag = [](i128 x) { return x < 0 ? -x : x; };
+  const LinearCoefficients& b = s.b;
+  const QuadraticCoefficients& c = s.c;
+  const i128 bMax = mag(b.A) * U + mag(b.B) * V + mag(b.C);
+  const i128 cMax = mag(c.A) * U * U + mag(c.B) * U * V + mag(c.C) * V * V + mag(c.D) * U + mag(c.E) * V + mag(c.F);
+  const i128 stepMax = mag(c.A) * (2 * U + 1) + mag(c.B) * V + mag(c.D);
+  return bMax < lim && cMax < lim && stepMax < lim && 2 * mag(c.A) < lim;
 }
 
 }  // namespace
@@ -90,12 +109,20 @@ void PixelDatapath::choosePaths() {
 }
 
 // The span loop's parts are inlined into it (evaluateSpanT), so that nothing is called per pixel.
-template <PixelDatapath::Shape S>
+template <PixelDatapath::Shape S, typename T>
 [[gnu::always_inline]] inline void PixelDatapath::startSpanT(int u, int v) {
   const bool facet = S == Shape::Facet || (S == Shape::Any && s_->facet);
   const bool solid = S == Shape::Solid || (S == Shape::Any && s_->solid);
   if (facet) {
     facetZ_.start(u, v);
+  } else if constexpr (sizeof(T) == sizeof(std::int64_t)) {  // b and c in 64-bit registers
+    delta_.start(u, v);
+    const QuadraticCoefficients& k = s_->c;
+    c64_ = std::int64_t(c_.direct(u, v));
+    cStep64_ = std::int64_t(k.A * (2 * i128(u) + 1) + k.B * i128(v) + k.D);
+    c2A64_ = std::int64_t(2 * k.A);
+    b64_ = std::int64_t(b_.direct(u, v));
+    bA64_ = std::int64_t(s_->b.A);
   } else {
     delta_.start(u, v);
     c_.start(u, v);
@@ -107,12 +134,17 @@ template <PixelDatapath::Shape S>
   }
 }
 
-template <PixelDatapath::Shape S>
+template <PixelDatapath::Shape S, typename T>
 [[gnu::always_inline]] inline void PixelDatapath::stepRightT() {
   const bool facet = S == Shape::Facet || (S == Shape::Any && s_->facet);
   const bool solid = S == Shape::Solid || (S == Shape::Any && s_->solid);
   if (facet) {
     facetZ_.stepRight();
+  } else if constexpr (sizeof(T) == sizeof(std::int64_t)) {  // QuadraticInterpolator::stepRight
+    delta_.stepRight();
+    c64_ += cStep64_;
+    cStep64_ += c2A64_;
+    b64_ += bA64_;
   } else {
     delta_.stepRight();
     c_.stepRight();
@@ -131,10 +163,14 @@ PixelOutcome PixelDatapath::evaluate(OverflowCounters& ovf) { return (this->*eva
 
 template <Rounding R, DepthVariant V, PixelDatapath::Shape S, typename T>
 void PixelDatapath::evaluateSpanT(int u, int v, int n, PixelOutcome* out, OverflowCounters& ovf) {
-  startSpanT<S>(u, v);
+  if constexpr (sizeof(T) == sizeof(std::int64_t)) {  // the 64-bit accumulators' bound holds in the box
+    if (u < 0 || v < 0 || u + n > s_->x1 - s_->x0 || v >= s_->y1 - s_->y0)
+      return evaluateSpanT<R, V, S, i128>(u, v, n, out, ovf);
+  }
+  startSpanT<S, T>(u, v);
   for (int i = 0; i < n; ++i) {
     out[i] = evaluateFloored<R, V, S, T>(ovf);
-    stepRightT<S>();
+    stepRightT<S, T>();
   }
 }
 
@@ -174,8 +210,14 @@ template <Rounding R, DepthVariant V, PixelDatapath::Shape S, typename T>
     return o;
   }
 
-  const T b = T(valueRange_.fit(b_.raw() >> Fi, cfg_.overflow, ovf.interpolator));
-  const T c = T(valueRange_.fit(c_.raw() >> Fi, cfg_.overflow, ovf.interpolator));
+  T b, c;
+  if constexpr (sizeof(T) == sizeof(std::int64_t)) {  // the 64-bit accumulators: the same values
+    b = valueRange_.fitT<T>(b64_ >> Fi, cfg_.overflow, ovf.interpolator);
+    c = valueRange_.fitT<T>(c64_ >> Fi, cfg_.overflow, ovf.interpolator);
+  } else {
+    b = T(valueRange_.fit(b_.raw() >> Fi, cfg_.overflow, ovf.interpolator));
+    c = T(valueRange_.fit(c_.raw() >> Fi, cfg_.overflow, ovf.interpolator));
+  }
   if (solid) {
     for (int i = 0; i < np; ++i)
       zkv_[std::size_t(i)] = s.planes[std::size_t(i)].zdir != 0 ? depth(zk_[std::size_t(i)].raw() >> Fi) : 0;

@@ -53,11 +53,12 @@ class PixelDatapath {
   // the host, the primitive's kind (facet, solid) tested at every pixel.
   PixelOutcome evaluate(OverflowCounters& ovf);
   // The n pixels (u, v), (u + 1, v), ... of a span: out[i] is what startSpan(u, v), then i
-  // stepRight() and evaluate() give, bit for bit, counters included; the interpolators end
-  // at (u + n, v). The engines' path: chosen per primitive (load) — its kind, and 64-bit
-  // host registers for b, c, √Δ and the depth unit where the configuration's widths and the
-  // primitive's exponents provably fit them (fits64, pixel_datapath.cpp) — so the inner loop
-  // tests neither; tests check it against evaluate() (tests/hw_model/test_pixel_datapath_fast.cpp).
+  // stepRight() and evaluate() give, bit for bit, counters included (call startSpan() again
+  // before evaluate() afterwards). The engines' path: chosen per primitive (load) — its kind,
+  // and 64-bit host registers for the b and c accumulators, b, c, √Δ and the depth unit where
+  // the configuration's widths and the primitive's coefficients and exponents provably fit
+  // them (fits64, pixel_datapath.cpp) — so the inner loop tests neither; tests check it
+  // against evaluate() (tests/hw_model/test_pixel_datapath_fast.cpp).
   void evaluateSpan(int u, int v, int n, PixelOutcome* out, OverflowCounters& ovf) {
     (this->*evalSpan_)(u, v, n, out, ovf);
   }
@@ -81,9 +82,9 @@ class PixelDatapath {
   PixelOutcome evaluateUnfloored(OverflowCounters& ovf);
   template <Rounding R, DepthVariant V, Shape S, typename T>
   void evaluateSpanT(int u, int v, int n, PixelOutcome* out, OverflowCounters& ovf);
-  template <Shape S>
+  template <Shape S, typename T = i128>
   void startSpanT(int u, int v);
-  template <Shape S>
+  template <Shape S, typename T = i128>
   void stepRightT();
   template <Rounding R, DepthVariant V>
   void choosePaths();
@@ -92,6 +93,9 @@ class PixelDatapath {
   SpanFn evalSpan_ = nullptr;
   bool narrow_ = false;
   double invAbsA_ = 0;  // 1 / |a| for the 64-bit host path's division by a (depthRootsT)
+  // The 64-bit host path's b and c accumulators (b_ and c_ there, the same values; those two
+  // are then not advanced: startSpan() again before evaluate() after an evaluateSpan()).
+  std::int64_t b64_ = 0, bA64_ = 0, c64_ = 0, cStep64_ = 0, c2A64_ = 0;
   const PrimitiveSetup* s_ = nullptr;
   const HwConfig& cfg_;
   QuadraticInterpolator delta_, c_;
