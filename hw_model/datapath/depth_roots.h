@@ -90,8 +90,10 @@ inline DepthRoots depthRootsT(const PrimitiveSetup& s, const HwConfig& cfg, T b,
       return r;
     }
     std::int64_t z1;
-    if constexpr (sizeof(T) == sizeof(std::int64_t)) z1 = windowDepth(divRound64ByReciprocal(shlT<T>(q, Fz), a, invAbsA, R));
-    else z1 = windowDepth(divRound(shlT<T>(q, Fz), a, R));
+    if constexpr (sizeof(T) == sizeof(std::int64_t))
+      z1 = windowDepth(divRound64ByReciprocal(shlT<T>(q, Fz), a, invAbsA, R));
+    else
+      z1 = windowDepth(divRound(shlT<T>(q, Fz), a, R));
     std::int64_t z2 = windowDepth(divRoundT<T>(shlT<T>(c, Fz), q, R));
     if (z2 < z1) std::swap(z1, z2);
     r.count = 2;

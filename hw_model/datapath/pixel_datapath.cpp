@@ -9,6 +9,23 @@ namespace qacc {
 
 namespace {
 
+// The b and c interpolators' accumulators in 64-bit registers: every value they take at a
+// position of the box, u in [0, x1 - x0] (the last step of a span lands on x1 - x0) and v in
+// [0, y1 - y0), every forward difference there and 2A are below 2^62 in magnitude (the sums
+// of the coefficients' magnitudes times the powers of the box's sides bound them; at most
+// about 2^104 for 74-bit coefficients on a 2^14-pixel side, kMaxImageSide, so the bound
+// itself fits i128). The 64-bit path runs only on spans within the box (evaluateSpanT).
+bool interpolatorsFit64(const PrimitiveSetup& s) {
+  const i128 U = s.x1 - s.x0, V = s.y1 - s.y0, lim = i128(1) << 62;
+  const auto mag = [](i128 x) { return x < 0 ? -x : x; };
+  const LinearCoefficients& b = s.b;
+  const QuadraticCoefficients& c = s.c;
+  const i128 bMax = mag(b.A) * U + mag(b.B) * V + mag(b.C);
+  const i128 cMax = mag(c.A) * U * U + mag(c.B) * U * V + mag(c.C) * V * V + mag(c.D) * U + mag(c.E) * V + mag(c.F);
+  const i128 stepMax = mag(c.A) * (2 * U + 1) + mag(c.B) * V + mag(c.D);
+  return bMax < lim && cMax < lim && stepMax < lim && 2 * mag(c.A) < lim;
+}
+
 // Whether primitive s's quadric datapath fits 64-bit host registers (depthRootsT's T, and
 // √Δ before it), so that evaluateSpan computes it in std::int64_t — the same values:
 //  - b, c and √Δ are value_bits + 1 registers (|x| <= 2^value_bits); the stable variant's
@@ -19,9 +36,8 @@ namespace {
 //    shift (and its rounding half 2^(shift-1)) is exact in 64 bits up to shift 62;
 //  - the depth unit's constants: a (a value_bits register), recipM (a recip_bits mantissa),
 //    0 <= z0 <= 2^Fz and 0 <= zShift <= Fz / 2 from setup, checked here all the same, so
-//    that z0 + t 2^-zShift of a clamped t (depth_bits <= 40) cannot leave 64 bits.
-bool interpolatorsFit64(const PrimitiveSetup& s);
-
+//    that z0 + t 2^-zShift of a clamped t (depth_bits <= 40) cannot leave 64 bits;
+//  - the b and c accumulators (interpolatorsFit64).
 bool fits64(const PrimitiveSetup& s, const HwConfig& cfg) {
   if (cfg.value_bits + 1 + cfg.depth_frac_bits > 62) return false;
   const int H = (cfg.delta_bits + 1) / 2, shift = s.ed - s.e;
@@ -29,23 +45,6 @@ bool fits64(const PrimitiveSetup& s, const HwConfig& cfg) {
   const i128 z0Max = i128(1) << 41, kMax = i128(1) << 62;
   return s.z0 >= -z0Max && s.z0 <= z0Max && s.zShift >= 0 && s.zShift <= 20 && s.a > -kMax && s.a < kMax &&
          s.recipM > -kMax && s.recipM < kMax && interpolatorsFit64(s);
-}
-
-// The b and c interpolators' accumulators in 64-bit registers: every value they take at a
-// position of the box, u in [0, x1 - x0] (the last step of a span lands on x1 - x0) and v in
-// [0, y1 - y0), every forward difference there and 2A are below 2^62 in magnitude (the sums of
-// the coefficients' magnitudes times the powers of the box's sides bound them; at most about
-// 2^104 for 74-bit coefficients on a 2^15-pixel side, so the bound itself fits i128). The
-// 64-bit path runs only on spans within the box (evaluateSpanT).
-bool interpolatorsFit64(const PrimitiveSetup& s) {
-  const i128 U = s.x1 - s.x0, V = s.y1 - s.y0, lim = i128(1) << 62;
-  const auto mag = [](i128 x) { return x < 0 ? -x : x; };
-  const LinearCoefficients& b = s.b;
-  const QuadraticCoefficients& c = s.c;
-  const i128 bMax = mag(b.A) * U + mag(b.B) * V + mag(b.C);
-  const i128 cMax = mag(c.A) * U * U + mag(c.B) * U * V + mag(c.C) * V * V + mag(c.D) * U + mag(c.E) * V + mag(c.F);
-  const i128 stepMax = mag(c.A) * (2 * U + 1) + mag(c.B) * V + mag(c.D);
-  return bMax < lim && cMax < lim && stepMax < lim && 2 * mag(c.A) < lim;
 }
 
 }  // namespace

@@ -196,8 +196,9 @@ TEST(PixelDatapathFast, SameAsReferenceOnRandomPrimitives) {
       const int db = cfg.delta_bits + Fi;
       if (cfg.overflow == OverflowMode::Wrap) {
         // Δ within its register: a wrapped Δ can turn negative, and the square-root extractor
-        // of the model (SqrtExtractor::computeWide) does not return for such an operand, in
-        // either path (a known limitation of the model, not of the fast path).
+        // of the model (SqrtExtractor::computeWide) does not return in practice for such an
+        // operand, in either path (a limitation of the model, not of the fast path; see
+        // docs/PERFORMANCE.md, round 7).
         s.delta = {bits(db - 14), bits(db - 14), bits(db - 14), bits(db - 10), bits(db - 10), bits(db - 2)};
       } else {
         const int dover = trial % 4 == 0 ? 4 : -2;
@@ -270,7 +271,8 @@ TEST(PixelDatapathFast, DivisionByReciprocalIsDivRound) {
       check(-(q * d + d / 2 + delta), d);
     }
   }
-  for (std::int64_t d : {std::int64_t(1), std::int64_t(3), std::int64_t(1) << 12, lim, lim - 1, std::int64_t(1) << 61}) {
+  const std::int64_t divisors[] = {1, 3, std::int64_t(1) << 12, lim, lim - 1, std::int64_t(1) << 61};
+  for (std::int64_t d : divisors) {
     check(lim, d);
     check(-lim, d);
     check((std::int64_t(1) << 50) * (d < (1 << 12) ? d : 1), d < (1 << 12) ? d : 1);
