@@ -239,7 +239,7 @@ template <Rounding R, DepthVariant V, PixelDatapath::Shape S, typename T>
   if (delta < 0) return o;
   o.candidate = true;
   const i128 din = deltaRange_.fit(delta, cfg_.overflow, ovf.sqrt);
-  const T sd = T(SqrtExtractor::compute((unsigned __int128)din));
+  const T sd = T(SqrtExtractor::compute(SqrtExtractor::operand(din, deltaRange_.width)));
   const T sq = valueRange_.fitT<T>(shiftRoundR<R>(sd, s.ed - s.e), cfg_.overflow, ovf.sqrt);
   const DepthRoots r = depthRootsT<R, V, T>(s, cfg_, b, c, sq, ovf, invAbsA_);
   for (int k = 0; k < r.count; ++k) {

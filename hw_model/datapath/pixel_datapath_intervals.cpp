@@ -47,7 +47,7 @@ int PixelDatapath::solidIntervals(OverflowCounters& ovf, FixedDepthInterval out[
     if (s_->a < 0) add(ninf, pinf);  // no root and f < 0 everywhere on the line
   } else {
     const i128 din = fitWidth(delta, cfg_.delta_bits + 1, cfg_.overflow, ovf.sqrt);
-    const i128 sd = i128(SqrtExtractor::compute((unsigned __int128)din));
+    const i128 sd = i128(SqrtExtractor::compute(SqrtExtractor::operand(din, cfg_.delta_bits + 1)));
     const i128 sq = fitWidth(shiftRound(sd, s_->ed - s_->e, cfg_.rounding), vw, cfg_.overflow, ovf.sqrt);
     const DepthRoots r = depthRoots(*s_, cfg_, b, c, sq, ovf);
     if (r.count == 2) {

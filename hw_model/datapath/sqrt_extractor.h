@@ -16,6 +16,14 @@ namespace qacc {
 
 class SqrtExtractor {
  public:
+  // The operand the extractor reads from a `width`-bit Δ register holding `reg`: its bits
+  // as an unsigned number. A Δ that was not negative but wrapped in the register (overflow
+  // "wrap") has its sign bit set: the extractor reads 2^width + reg, as the digit recurrence
+  // over those bits would, instead of a 128-bit number no square root fits in (whose
+  // correction loop never ended). Unchanged for every value that fits.
+  static unsigned __int128 operand(i128 reg, int width) {
+    return (unsigned __int128)reg & ((((unsigned __int128)1) << width) - 1);
+  }
   // Digit recurrence with radix 2 or 4 over an operand of `inputBits` bits (even-rounded up).
   static std::uint64_t recurrence(unsigned __int128 n, int inputBits, int radix);
   // Same result, fast path: the host's double square root, corrected to the exact floor

@@ -41,6 +41,21 @@ TEST(SqrtExtractor, ExhaustiveSmallWidthsBothRadices) {
   }
 }
 
+TEST(SqrtExtractor, AWrappedRegisterIsReadAsItsBits) {
+  // A Δ register of 65 bits (delta_bits 64) whose value wrapped negative: the extractor reads
+  // its 65 bits, 2^65 + reg, and returns (that is, does not loop) the root the digit
+  // recurrence over those bits gives. A value that fits is read unchanged.
+  for (const i128 reg : {i128(-1), -(i128(1) << 64), i128(-12345), -(i128(1) << 63) + 7}) {
+    const unsigned __int128 n = SqrtExtractor::operand(reg, 65);
+    EXPECT_EQ(n, (unsigned __int128)((i128(1) << 65) + reg));
+    const std::uint64_t q = SqrtExtractor::compute(n);
+    EXPECT_EQ(SqrtExtractor::recurrence(n, 65, 4), q);
+    EXPECT_TRUE((unsigned __int128)q * q <= n && (unsigned __int128)(q + 1) * (q + 1) > n);
+  }
+  for (const i128 reg : {i128(0), i128(1), (i128(1) << 64) - 1})
+    EXPECT_EQ(SqrtExtractor::operand(reg, 65), (unsigned __int128)reg);
+}
+
 TEST(SqrtExtractor, RandomLargeOperands) {
   std::mt19937_64 rng(12345);
   for (int i = 0; i < 200000; ++i) {

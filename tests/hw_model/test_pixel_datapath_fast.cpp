@@ -194,16 +194,10 @@ TEST(PixelDatapathFast, SameAsReferenceOnRandomPrimitives) {
       s.c = {bits(vb + Fi - 10), bits(vb + Fi - 10), bits(vb + Fi - 10), bits(vb + Fi - 5 + over),
              bits(vb + Fi - 5), bits(vb + Fi + over)};
       const int db = cfg.delta_bits + Fi;
-      if (cfg.overflow == OverflowMode::Wrap) {
-        // Δ within its register: a wrapped Δ can turn negative, and the square-root extractor
-        // of the model (SqrtExtractor::computeWide) does not return in practice for such an
-        // operand, in either path (a limitation of the model, not of the fast path; see
-        // docs/PERFORMANCE.md, round 7).
-        s.delta = {bits(db - 14), bits(db - 14), bits(db - 14), bits(db - 10), bits(db - 10), bits(db - 2)};
-      } else {
-        const int dover = trial % 4 == 0 ? 4 : -2;
-        s.delta = {bits(db - 12), bits(db - 12), bits(db - 12), bits(db - 5 + dover), bits(db - 5), bits(db + dover)};
-      }
+      // Δ past its register now and then: under "wrap" a wrapped Δ turns negative, and the
+      // square-root extractor reads the register's bits (SqrtExtractor::operand).
+      const int dover = trial % 4 == 0 ? 4 : -2;
+      s.delta = {bits(db - 12), bits(db - 12), bits(db - 12), bits(db - 5 + dover), bits(db - 5), bits(db + dover)};
       if (trial % 2 == 0) s.delta.F = s.delta.F < 0 ? -s.delta.F : s.delta.F;  // more covered pixels
       s.facetZ = {bits(Fz + Fi - 6), bits(Fz + Fi - 6), depthSeed()};
       s.zFloor = i128(rng() % ((std::uint64_t(1) << Fz) / 2));
