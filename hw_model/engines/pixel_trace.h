@@ -11,6 +11,7 @@
 // against the banked buffer, what reaches shading, stalls — is simulated in the loop.
 #pragma once
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "hw_model/config/hw_config.h"
@@ -21,13 +22,17 @@
 
 namespace qacc {
 
+// Trivially constructible, without default values: PixelTrace::build sizes the trace
+// without touching it (UninitVector) and its parallel pass writes every field of every
+// pixel, first touching the pages in the threads that fill them.
 struct TracedPixel {
-  std::int64_t z = 0;        // depth, internal format (fits: 0 <= z <= 2^depth_frac_bits)
-  std::int16_t cap = -1;     // cap plane, -1 for a surface point
-  std::uint8_t hit = 0;      // a visible point survived clipping
-  std::uint8_t candidate = 0;  // a point reached the clip unit
-  std::uint16_t clipPasses = 0;
+  std::int64_t z;            // depth, internal format (fits: 0 <= z <= 2^depth_frac_bits)
+  std::int16_t cap;          // cap plane, -1 for a surface point
+  std::uint8_t hit;          // a visible point survived clipping
+  std::uint8_t candidate;    // a point reached the clip unit
+  std::uint16_t clipPasses;
 };
+static_assert(std::is_trivially_default_constructible_v<TracedPixel>);
 
 struct RowSpans {  // a row of a primitive with at least one span
   int y = 0, n = 0;
