@@ -46,15 +46,29 @@ VectorSetup randomField(std::mt19937_64& rng, int w) {
   return f;
 }
 
-VectorSetup negated(const VectorSetup& f) {
+// The opposite field in the same w-bit coefficient registers: -(-2^(w-1)) does not fit them
+// and saturates to 2^(w-1) - 1, as setup's quantize would (a coefficient of 2^63 at w = 64 is
+// outside the registers the 64-bit datapath reads, and no setup produces it).
+VectorSetup negated(const VectorSetup& f, int w) {
+  const i128 hi = (i128(1) << (w - 1)) - 1;
+  const auto neg = [&](i128 x) { return -x > hi ? hi : -x; };
   VectorSetup g = f;
   for (int k = 0; k < 3; ++k) {
-    g.uv[k].A = -f.uv[k].A;
-    g.uv[k].B = -f.uv[k].B;
-    g.uv[k].C = -f.uv[k].C;
-    g.cz[k] = -f.cz[k];
+    g.uv[k].A = neg(f.uv[k].A);
+    g.uv[k].B = neg(f.uv[k].B);
+    g.uv[k].C = neg(f.uv[k].C);
+    g.cz[k] = neg(f.cz[k]);
   }
   return g;
+}
+
+// Whether every coefficient of f is a value of the w-bit registers setup fills.
+bool fitsWidth(const VectorSetup& f, int w) {
+  const i128 hi = (i128(1) << (w - 1)) - 1, lo = -hi - 1;
+  const auto in = [&](i128 x) { return x >= lo && x <= hi; };
+  for (int k = 0; k < 3; ++k)
+    if (!in(f.uv[k].A) || !in(f.uv[k].B) || !in(f.uv[k].C) || !in(f.cz[k])) return false;
+  return true;
 }
 
 Eigen::Vector3d randomDirection(std::mt19937_64& rng) {
@@ -153,8 +167,11 @@ TEST(ShadingUnit, SixtyFourBitDatapathEqualsTheReferenceOnRandomFieldsAndConfigu
       if (s.material >= int(scene.materials.size())) s.material = -1;  // out of range: material 0
       s.normal = randomField(rng, w);
       const bool backFace = rng() % 6 == 0;
-      s.view = backFace ? negated(s.normal) : randomField(rng, w);
-      for (int i = 0; i < points; ++i) s.pointLights.push_back(rng() % 6 == 0 ? negated(s.view) : randomField(rng, w));
+      s.view = backFace ? negated(s.normal, w) : randomField(rng, w);
+      for (int i = 0; i < points; ++i) s.pointLights.push_back(rng() % 6 == 0 ? negated(s.view, w) : randomField(rng, w));
+      // The inputs are what setup can produce: coefficients within their registers.
+      ASSERT_TRUE(fitsWidth(s.normal, w) && fitsWidth(s.view, w)) << "trial " << trial;
+      for (const VectorSetup& f : s.pointLights) ASSERT_TRUE(fitsWidth(f, w)) << "trial " << trial;
       const int planes = int(rng() % 3);
       for (int i = 0; i < planes; ++i) {
         PlaneSetup p;
