@@ -31,8 +31,9 @@ bool interpolatorsFit64(const PrimitiveSetup& s) {
 //  - b, c and √Δ are value_bits + 1 registers (|x| <= 2^value_bits); the stable variant's
 //    dividends q · 2^Fz and c · 2^Fz stay below 2^62, divRound64's domain, when
 //    value_bits + 1 + depth_frac_bits <= 62 (the default: 32 + 1 + 28 = 61);
-//  - the extractor's root sd < 2^H, H = ceil(delta_bits / 2) (Δ <= 2^delta_bits - 1), scaled
-//    by 2^-(ed - e): a left shift by k = e - ed stays below 2^63 when H + k <= 62, a right
+//  - the extractor's root sd < 2^(H + 1/2), H = ceil(delta_bits / 2) (its operand is below
+//    2^(delta_bits + 1): a wrapped Δ register is read as its bits, SqrtExtractor::operand), scaled
+//    by 2^-(ed - e): a left shift by k = e - ed stays below 2^62.5 < 2^63 when H + k <= 62, a right
 //    shift (and its rounding half 2^(shift-1)) is exact in 64 bits up to shift 62;
 //  - the depth unit's constants: a (a value_bits register), recipM (a recip_bits mantissa),
 //    0 <= z0 <= 2^Fz and 0 <= zShift <= Fz / 2 from setup, checked here all the same, so
