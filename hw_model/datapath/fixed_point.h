@@ -120,13 +120,20 @@ inline T shiftRoundFitR(T v, int shift) {
   else return shiftRoundT<T>(v, shift, R);
 }
 
-// The quotient a / d of non-negative a < 2^62 and positive d < 2^62, from the estimate qf of
-// a / d, rounded with r and given the sign of a negative quotient when ng. A quotient below
-// 2^50 comes from the host's floating-point unit, corrected by its remainder (faster than a
-// 64-bit integer divide): an estimate that carries at most 4 roundings of 2^-53 is off by at
-// most about 4 · 2^-53 · 2^50 = 1/2 there, so its floor is off by at most one.
-[[gnu::always_inline]] inline std::int64_t divRoundFromEstimate(long long a, long long d, bool ng, double qf,
+// num / den (den != 0, |num|, |den| < 2^62, so that the negations and 2·rem cannot
+// overflow) rounded with r, from an estimate qf of |num / den|. A quotient below 2^50 comes
+// from the host's floating-point unit, corrected by its remainder (faster than a 64-bit
+// integer divide): an estimate that carries at most 4 roundings of 2^-53 is off by at most
+// about 4 · 2^-53 · 2^50 = 1/2 there, so its floor is off by at most one.
+[[gnu::always_inline]] inline std::int64_t divRoundFromEstimate(std::int64_t num, std::int64_t den, double qf,
                                                                 Rounding r) {
+  long long n = num, d = den;
+  if (d < 0) {
+    n = -n;
+    d = -d;
+  }
+  const bool ng = n < 0;
+  const long long a = ng ? -n : n;
   long long q, rem;
   if (qf < 0x1p50) {
     q = (long long)qf;
@@ -149,19 +156,14 @@ inline T shiftRoundFitR(T v, int shift) {
   return ng ? -q : q;
 }
 
-// divRound's 64-bit path: num / den (den != 0) rounded with r, for |num|, |den| < 2^62 (so
-// that the negations and 2·rem cannot overflow). The datapaths whose widths keep both
-// operands in that range (pixel_datapath.cpp) call it directly; divRound calls it for them.
-// Always inlined: the rounding mode is then a constant of the caller's inner loop.
+// divRound's 64-bit path: num / den (den != 0) rounded with r, for |num|, |den| < 2^62. The
+// datapaths whose widths keep both operands in that range (pixel_datapath.cpp) call it
+// directly; divRound calls it for them. Always inlined: the rounding mode is then a constant
+// of the caller's inner loop. The estimate |double(num) / double(den)| is
+// double(|num|) / double(|den|) exactly (the conversions and the division round the
+// magnitudes alike): 3 roundings.
 [[gnu::always_inline]] inline std::int64_t divRound64(std::int64_t num, std::int64_t den, Rounding r) {
-  long long n = num, d = den;
-  if (d < 0) {
-    n = -n;
-    d = -d;
-  }
-  const bool ng = n < 0;
-  const long long a = ng ? -n : n;
-  return divRoundFromEstimate(a, d, ng, double(a) / double(d), r);  // 3 roundings
+  return divRoundFromEstimate(num, den, std::fabs(double(num) / double(den)), r);
 }
 
 // divRound64 by a constant divisor den whose reciprocal invAbsDen = 1.0 / double(|den|) the
@@ -169,14 +171,7 @@ inline T shiftRoundFitR(T v, int shift) {
 // (4 roundings: |num|, |den|, the reciprocal and the product).
 [[gnu::always_inline]] inline std::int64_t divRound64ByReciprocal(std::int64_t num, std::int64_t den, double invAbsDen,
                                                                   Rounding r) {
-  long long n = num, d = den;
-  if (d < 0) {
-    n = -n;
-    d = -d;
-  }
-  const bool ng = n < 0;
-  const long long a = ng ? -n : n;
-  return divRoundFromEstimate(a, d, ng, double(a) * invAbsDen, r);
+  return divRoundFromEstimate(num, den, std::fabs(double(num)) * invAbsDen, r);
 }
 
 // Integer quotient num / den (den != 0) with the given rounding (Truncate = toward zero).
@@ -233,13 +228,20 @@ inline i128 quantize(double v, int scaleBits, int width, OverflowMode mode, Over
   return i128(s);
 }
 
-// Number of bits needed for |v| (0 for 0).
-inline int bitLength(i128 v) {
-  const unsigned __int128 m = v < 0 ? (unsigned __int128)(-v) : (unsigned __int128)v;
+// |v| as an unsigned 128-bit number (exact for every v).
+inline unsigned __int128 magnitude(i128 v) {
+  return v < 0 ? (unsigned __int128)0 - (unsigned __int128)v : (unsigned __int128)v;
+}
+
+// Number of bits of m (0 for 0): the leading-zero count of a 128-bit register.
+inline int bitLength(unsigned __int128 m) {
   const std::uint64_t hi = std::uint64_t(m >> 64), lo = std::uint64_t(m);
   if (hi) return 128 - __builtin_clzll(hi);
   return lo ? 64 - __builtin_clzll(lo) : 0;
 }
+
+// Number of bits needed for |v| (0 for 0).
+inline int bitLength(i128 v) { return bitLength(magnitude(v)); }
 
 // The exponent e such that |m| · 2^e < 2^(bits) with the least headroom: the block
 // exponent a setup unit chooses so that the largest value of a datapath uses its width.

@@ -16,6 +16,8 @@
 #include <array>
 #include <cstdint>
 
+#include "hw_model/datapath/fixed_point.h"
+
 namespace qacc {
 
 class ReciprocalSqrt {
@@ -32,9 +34,7 @@ class ReciprocalSqrt {
     Result r;
     if (L == 0) return r;
     // Even shift s = 2k bringing the bit length of m to 2P+1 or 2P+2.
-    const std::uint64_t hi = std::uint64_t(L >> 64);
-    const int len = hi ? 128 - __builtin_clzll(hi) : 64 - __builtin_clzll(std::uint64_t(L));
-    int s = len - (2 * P + 2);
+    int s = bitLength(L) - (2 * P + 2);
     if (s & 1) ++s;
     const std::uint64_t m = std::uint64_t(s >= 0 ? (L >> s) : (L << -s));
     r.k = s / 2;

@@ -106,9 +106,6 @@ namespace {
 // (shadePixelWide). shadePixel computes the same bits with 64-bit registers
 // (shading_datapath64.h) wherever they provably hold every value; tests compare the two.
 
-// |v| as an unsigned 128-bit value (v > -2^127 in every datapath here).
-inline unsigned __int128 magnitude(i128 v) { return v < 0 ? (unsigned __int128)(-v) : (unsigned __int128)v; }
-
 using T = i128;
 
 // Inlined into the shading datapath (four calls a pixel): its inputs then stay in registers
@@ -124,24 +121,8 @@ template <Rounding R>
     out[0] = out[1] = out[2] = 0;
     return;
   }
-  const std::uint64_t mhi = std::uint64_t(m >> 64);
-  const int len = mhi ? 128 - __builtin_clzll(mhi) : 64 - __builtin_clzll(std::uint64_t(m));
-  const int shift = len - (nb - 1);
-  if (shift <= 0) {
-    for (int k = 0; k < 3; ++k) n[k] = T(in[k]) * (T(1) << -shift);
-  } else if (len <= 62) {
-    // Every component fits a 64-bit register: the same rounding shift there.
-    for (int k = 0; k < 3; ++k) n[k] = T(shiftRoundR<R, std::int64_t>(std::int64_t(in[k]), shift));
-  } else if constexpr (R != Rounding::NearestEven) {
-    // Wider: the top bits come down to 64 bits first. floor((v + 2^(s-1)) / 2^s) =
-    // floor((floor(v / 2^(s-1)) + 1) / 2), so rounding to nearest needs only v >> (s-1).
-    for (int k = 0; k < 3; ++k) {
-      const std::int64_t t = std::int64_t(in[k] >> (shift - 1));
-      n[k] = T(R == Rounding::Truncate ? t >> 1 : (t + 1) >> 1);
-    }
-  } else {
-    for (int k = 0; k < 3; ++k) n[k] = T(shiftRoundR<R, i128>(in[k], shift));
-  }
+  const int shift = bitLength(m) - (nb - 1);
+  for (int k = 0; k < 3; ++k) n[k] = shiftRoundR<R, T>(in[k], shift);
   const T len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   if (cfg.shading_normalizer == Normalizer::Newton) {
     // unit = n / sqrt(len2) in 1.uf, with 1/sqrt(len2) = y · 2^-(2P+1+k) from the rsqrt unit.

@@ -52,8 +52,7 @@ class VectorNormalizer64 {
       out[0] = out[1] = out[2] = 0;
       return;
     }
-    const std::uint64_t mhi = std::uint64_t(m >> 64);
-    const int len = mhi ? 128 - __builtin_clzll(mhi) : 64 - __builtin_clzll(std::uint64_t(m));
+    const int len = bitLength(m);
     const int shift = len - (nb_ - 1);
     std::int64_t n[3];
     if (shift <= 0) {
@@ -77,7 +76,7 @@ class VectorNormalizer64 {
   // A vector of 64-bit components below 2^62 in magnitude (the half vector L + V of two
   // vectors of 1.unit_frac: below 2^(uf+2)).
   [[gnu::always_inline]] inline void normalize(const std::int64_t in[3], std::int64_t out[3]) const {
-    const std::uint64_t m = magnitude(in[0]) | magnitude(in[1]) | magnitude(in[2]);
+    const std::uint64_t m = magnitude64(in[0]) | magnitude64(in[1]) | magnitude64(in[2]);
     if (m == 0) {
       out[0] = out[1] = out[2] = 0;
       return;
@@ -94,8 +93,7 @@ class VectorNormalizer64 {
   }
 
  private:
-  static unsigned __int128 magnitude(i128 v) { return v < 0 ? (unsigned __int128)(-v) : (unsigned __int128)v; }
-  static std::uint64_t magnitude(std::int64_t v) { return v < 0 ? std::uint64_t(0) - std::uint64_t(v) : std::uint64_t(v); }
+  static std::uint64_t magnitude64(std::int64_t v) { return v < 0 ? std::uint64_t(0) - std::uint64_t(v) : std::uint64_t(v); }
 
   // n (the shifted vector, 2^(nb-2) <= max |n_k| <= 2^(nb-1)) → the unit vector in 1.uf.
   [[gnu::always_inline]] inline void scale(const std::int64_t n[3], std::int64_t out[3]) const {
