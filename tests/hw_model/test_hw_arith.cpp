@@ -15,6 +15,7 @@
 #include "hw_model/timing/pixel_pipeline_unit.h"
 #include "hw_model/datapath/sqrt_extractor.h"
 #include "modeling/loader/scene_loader.h"
+#include "tests/hw_model/exact_div_round.h"
 
 using namespace qacc;
 
@@ -141,18 +142,6 @@ TEST(FixedPoint, RoundingModes) {
 // corrects it by the remainder: the same quotient as integer division in every rounding mode,
 // on random operands of every length, ties, exact multiples and quotients near 2^50.
 TEST(FixedPoint, DivRoundMatchesIntegerDivision) {
-  const auto expected = [](i128 num, i128 den, Rounding r) {
-    if (den < 0) {
-      num = -num;
-      den = -den;
-    }
-    const bool neg = num < 0;
-    const i128 n = neg ? -num : num;
-    i128 q = n / den;
-    const i128 rem = n % den;
-    if (r != Rounding::Truncate && (2 * rem > den || (2 * rem == den && (r == Rounding::Nearest || (q & 1))))) ++q;
-    return neg ? -q : q;
-  };
   std::mt19937_64 rng(5);
   const auto operand = [&](int bits) {
     const long long v = bits >= 63 ? (long long)(rng() >> 2) : (long long)(rng() >> (64 - bits));
@@ -171,7 +160,7 @@ TEST(FixedPoint, DivRoundMatchesIntegerDivision) {
     }
     if (num <= -(i128(1) << 62) || num >= (i128(1) << 62)) continue;
     for (Rounding r : {Rounding::Truncate, Rounding::Nearest, Rounding::NearestEven})
-      ASSERT_EQ(divRound(num, den, r), expected(num, den, r))
+      ASSERT_EQ(divRound(num, den, r), test::exactDivRound(num, den, r))
           << (long long)num << " / " << (long long)den << " rounding " << toString(r);
     ++checked;
   }

@@ -16,6 +16,7 @@
 #include "hw_model/datapath/sqrt_extractor.h"
 #include "hw_model/engines/frame_setup.h"
 #include "modeling/loader/scene_loader.h"
+#include "tests/hw_model/exact_div_round.h"
 
 using namespace qacc;
 
@@ -227,28 +228,13 @@ TEST(PixelDatapathFast, SameAsReferenceOnRandomPrimitives) {
 // them, quotients at 2^50 (the integer divide's side) and operands at 2^62 - 1. The reference
 // is the 128-bit integer division (divRound's wide path).
 TEST(PixelDatapathFast, DivisionByReciprocalIsDivRound) {
-  const auto exactDivRound = [](i128 num, i128 den, Rounding r) {
-    if (den < 0) {
-      num = -num;
-      den = -den;
-    }
-    const bool neg = num < 0;
-    const i128 n = neg ? -num : num;
-    i128 q = n / den;
-    const i128 rem = n - q * den;
-    if (r != Rounding::Truncate) {
-      const i128 twice = 2 * rem;
-      if (twice > den || (twice == den && (r == Rounding::Nearest || (q & 1)))) ++q;
-    }
-    return neg ? -q : q;
-  };
   std::mt19937_64 rng(7);
   const std::int64_t lim = (std::int64_t(1) << 62) - 1;
   const auto check = [&](std::int64_t n, std::int64_t d) {
     if (d == 0 || n > lim || n < -lim || d > lim || d < -lim) return;
     const double inv = 1.0 / double(d < 0 ? -d : d);
     for (Rounding r : {Rounding::Truncate, Rounding::Nearest, Rounding::NearestEven})
-      ASSERT_EQ(i128(divRound64ByReciprocal(n, d, inv, r)), exactDivRound(n, d, r)) << n << " / " << d;
+      ASSERT_EQ(i128(divRound64ByReciprocal(n, d, inv, r)), test::exactDivRound(n, d, r)) << n << " / " << d;
   };
   for (int i = 0; i < 200000; ++i) {
     const int nb = int(rng() % 63), dbits = int(rng() % 63);
