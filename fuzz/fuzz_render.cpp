@@ -75,6 +75,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   limits.max_input_bytes = 1 << 20;
   limits.max_primitives = 2000;
   limits.max_cells = 5000;
+  limits.max_clip_work = 10000000;  // about 30 ms of setup: up to 82 clip planes on one primitive
   qacc::Scene scene;
   try {
     scene = qacc::parseScene(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json",

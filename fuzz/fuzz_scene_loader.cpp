@@ -17,6 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   limits.max_primitives = 20000;
   limits.max_cells = 20000;
   limits.max_triangles = 100000;
+  limits.max_clip_work = 10000000;  // about 30 ms of setup: up to 82 clip planes on one primitive
   try {
     qacc::parseScene(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json",
                      QACC_SOURCE_DIR "/scenes", limits);

@@ -91,8 +91,10 @@ Camera readCamera(const JsonNode& n) {
   return c;
 }
 
-std::vector<Light> readLights(const JsonNode& n) {
+std::vector<Light> readLights(const JsonNode& n, const Limits& limits) {
   std::vector<Light> lights;
+  if (n.isArray() && n.size() > limits.max_lights)
+    n.fail(Limits::exceeded("the scene", n.size(), "lights", limits.max_lights, "max-lights"));
   for (const JsonNode& l : n.elements()) {
     if (!l.isObject()) l.fail("expected a light object");
     Light light;
@@ -119,8 +121,10 @@ std::vector<Light> readLights(const JsonNode& n) {
   return lights;
 }
 
-void readMaterials(const JsonNode& n, Scene& scene, std::map<std::string, int>& index) {
+void readMaterials(const JsonNode& n, Scene& scene, std::map<std::string, int>& index, const Limits& limits) {
   if (!n.isObject()) n.fail("expected an object mapping names to materials");
+  if (n.json().size() > limits.max_materials)
+    n.fail(Limits::exceeded("the scene", n.json().size(), "materials", limits.max_materials, "max-materials"));
   for (auto it = n.json().begin(); it != n.json().end(); ++it) {
     const std::string name = it.key();
     const JsonNode m = n.at(name);
@@ -203,10 +207,11 @@ struct BuiltObject {
 };
 
 // `origin` is the scene's origin for a top-level object (its placement is taken relative to
-// it, scene_origin.h) and zero for the parts of another object.
+// it, scene_origin.h) and zero for the parts of another object. `clipWork` (top-level
+// objects): the scene's clip work so far (Limits::max_clip_work), this object's added.
 BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, const std::map<std::string, int>& materials,
                             const std::string& directory, const Limits& limits, const ViewVolume* worldView,
-                            const Eigen::Vector3d& origin, const ScreenView* screen) {
+                            const Eigen::Vector3d& origin, const ScreenView* screen, std::size_t* clipWork) {
   if (!o.isObject()) o.fail("expected an object with a \"type\"");
   BuiltObject out;
   const JsonNode typeNode = o.at("type");
@@ -236,7 +241,14 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
     out.transform.M.topRightCorner<3, 1>() -= origin;
     out.transform.given = true;
   }
-  if (auto c = o.get("clip")) out.clip = readClip(*c);
+  if (auto c = o.get("clip")) {
+    out.clip = readClip(*c);
+    // Refused before the builder makes pieces with them (each piece's bounds cost this).
+    const std::size_t work = Limits::clipWork(out.clip.size());
+    if (work > limits.max_clip_work)
+      c->fail(Limits::exceeded("a piece with these " + std::to_string(out.clip.size()) + " clip planes", work,
+                               "clip-polyhedron plane tests", limits.max_clip_work, "max-clip-work"));
+  }
 
   ObjectContext ctx{scene, directory, out.material, solid, has_material, {}, limits};
   // Parts of a csg tree stay whole: culling is for top-level objects other than csg.
@@ -271,6 +283,14 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
     if (!primitiveFinite(p)) o.fail("object produces non-finite coefficients (sizes or scales too extreme)");
     if (p.quadric.Q.topLeftCorner<3, 4>().cwiseAbs().maxCoeff() == 0.0)
       o.fail("object degenerates to a constant (sizes or scales too extreme for double precision)");
+  }
+  // The scene's clip work so far, counted before the pieces' bounds are computed below.
+  if (clipWork) {
+    std::size_t work = *clipWork;
+    for (const Primitive& p : out.prims) work = Limits::addSaturated(work, Limits::clipWork(p.clip.size()));
+    if (work > limits.max_clip_work)
+      o.fail(Limits::exceeded("the scene", work, "clip-polyhedron plane tests", limits.max_clip_work, "max-clip-work"));
+    *clipWork = work;
   }
   // A top-level object's frame may give precision away (frame_precision.h): checked on the
   // pieces that reach the view.
@@ -311,9 +331,11 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
 }
 
 void readObject(const JsonNode& o, std::size_t index, Scene& scene, const std::map<std::string, int>& materials,
-                const std::string& directory, const Limits& limits, const ViewVolume* view, const ScreenView& screen) {
+                const std::string& directory, const Limits& limits, const ViewVolume* view, const ScreenView& screen,
+                std::size_t& clipWork) {
   const std::size_t exactBefore = scene.exact_surfaces.size();
-  BuiltObject built = buildPrimitives(o, int(index), scene, materials, directory, limits, view, scene.origin, &screen);
+  BuiltObject built =
+      buildPrimitives(o, int(index), scene, materials, directory, limits, view, scene.origin, &screen, &clipWork);
   if (scene.primitives.size() + built.prims.size() > limits.max_primitives)
     o.fail(Limits::exceeded("the scene", scene.primitives.size() + built.prims.size(), "primitives",
                             limits.max_primitives, "max-primitives"));
@@ -353,7 +375,7 @@ std::vector<Primitive> buildObject(const JsonNode& o, ObjectContext& parent, int
   for (std::size_t i = 1; i < parent.scene.materials.size(); ++i) materials.emplace(parent.scene.materials[i].name, int(i));
   const std::size_t exactBefore = parent.scene.exact_surfaces.size();
   BuiltObject built = buildPrimitives(o, objectIndex, parent.scene, materials, parent.directory, parent.limits, nullptr,
-                                      Eigen::Vector3d::Zero(), nullptr);
+                                      Eigen::Vector3d::Zero(), nullptr, nullptr);
   if (parent.scene.exact_surfaces.size() > exactBefore)
     o.fail("a '" + built.type + "' object has a non-quadric exact surface and cannot be a part of another object");
   return std::move(built.prims);
@@ -380,7 +402,7 @@ Scene buildScene(const std::string& text, const std::string& file, const std::st
   if (auto d = root.get("description")) d->string();
   if (auto img = root.get("image")) readImage(*img, scene);
   scene.camera = readCamera(root.at("camera"));
-  if (auto l = root.get("lights")) scene.lights = readLights(*l);
+  if (auto l = root.get("lights")) scene.lights = readLights(*l, limits);
   if (scene.lights.empty()) scene.lights = Scene::defaultLights(scene.camera);
   // Everything from here on is relative to the scene's origin (scene_origin.h).
   scene.origin = sceneOrigin(scene.camera);
@@ -390,7 +412,7 @@ Scene buildScene(const std::string& text, const std::string& file, const std::st
     if (l.type == Light::Type::Point) l.position -= scene.origin;
 
   std::map<std::string, int> materials;
-  if (auto m = root.get("materials")) readMaterials(*m, scene, materials);
+  if (auto m = root.get("materials")) readMaterials(*m, scene, materials, limits);
 
   const JsonNode objects = root.at("objects");
   const std::size_t n = objects.size();
@@ -402,8 +424,9 @@ Scene buildScene(const std::string& text, const std::string& file, const std::st
   std::optional<ViewVolume> view;
   if (culling.enabled) view = ViewVolume::of(scene.camera, width, height);
   const ScreenView screen(scene.camera, width, height);
+  std::size_t clipWork = 0;  // Limits::max_clip_work
   for (std::size_t i = 0; i < n; ++i)
-    readObject(objects[i], i, scene, materials, directory, limits, view ? &*view : nullptr, screen);
+    readObject(objects[i], i, scene, materials, directory, limits, view ? &*view : nullptr, screen, clipWork);
   root.finish();
   return scene;
 }

@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include <unistd.h>
@@ -340,4 +342,60 @@ TEST(Reliability, FacetTrianglesOverTheLimitStopTheTessellation) {
   }
   options.max_scene_triangles = triangles;
   EXPECT_EQ(tessellateScene(s, options).size(), triangles);
+}
+
+// 33 000 clip planes on one sphere: the exact extent of its piece enumerates the vertices of
+// the clip polyhedron (every triple of planes tested against every plane): stopped after 300 s.
+// The work is priced before any piece is built, per clip list and summed over the scene.
+TEST(Reliability, ClipWorkIsBoundedBeforeThePiecesAreBuilt) {
+  EXPECT_EQ(Limits::clipWork(0), 0u);
+  EXPECT_EQ(Limits::clipWork(1), 35u * 7 - 120);  // C(7, 3) 7 - 120
+  EXPECT_EQ(Limits::clipWork(400), std::size_t(11071620) * 406 - 120);
+  EXPECT_EQ(Limits::clipWork(std::size_t(1) << 40), std::numeric_limits<std::size_t>::max());
+  EXPECT_EQ(Limits::addSaturated(std::numeric_limits<std::size_t>::max(), 1), std::numeric_limits<std::size_t>::max());
+  const auto sphere = [](int planes) {
+    std::string clip;
+    for (int i = 0; i < planes; ++i) {
+      const double t = 6.283185307179586 * i / planes;
+      clip += (i ? "," : "") + std::string("[") + std::to_string(std::cos(t)) + ", 0, " + std::to_string(std::sin(t)) +
+              ", -0.98]";
+    }
+    return R"({"type": "sphere", "center": [0,0,0], "radius": 1, "solid": true, "clip": [)" + clip + "]}";
+  };
+  const std::string many = loadError(sceneWith(sphere(33000)));
+  EXPECT_NE(many.find("/objects/0/clip"), std::string::npos) << many;
+  EXPECT_NE(many.find("33000 clip planes"), std::string::npos) << many;
+  EXPECT_NE(many.find("--max-clip-work"), std::string::npos) << many;
+  // Summed over the scene: each object is within the limit, the second passes it.
+  Limits tight;
+  tight.max_clip_work = Limits::clipWork(8) + Limits::clipWork(8) / 2;
+  EXPECT_EQ(loadError(sceneWith(sphere(8)), tight), "");
+  const std::string sum = loadError(sceneWith(sphere(8) + "," + sphere(8)), tight);
+  EXPECT_NE(sum.find("/objects/1"), std::string::npos) << sum;
+  EXPECT_NE(sum.find("the scene needs " + std::to_string(2 * Limits::clipWork(8))), std::string::npos) << sum;
+  tight.max_clip_work = 2 * Limits::clipWork(8);
+  EXPECT_EQ(loadError(sceneWith(sphere(8) + "," + sphere(8)), tight), "");
+}
+
+// Under 100 000 point lights the reference was stopped after 100 s (each covered pixel is
+// shaded once per light); 300 000 materials took 300 MB. Both are counted before any is read.
+TEST(Reliability, LightsAndMaterialsAreCounted) {
+  const auto scene = [](int lights, int materials) {
+    std::string l, m;
+    for (int i = 0; i < lights; ++i) l += (i ? "," : "") + std::string(R"({"type": "point", "position": [0, 0, 5]})");
+    for (int i = 0; i < materials; ++i) m += (i ? "," : "") + ("\"m" + std::to_string(i) + "\": {}");
+    return R"({"format": "qacc-scene/1", "camera": {"eye": [0, 0, 10], "target": [0, 0, 0]}, "lights": [)" + l +
+           R"(], "materials": {)" + m + R"(}, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1}]})";
+  };
+  Limits few;
+  few.max_lights = 3;
+  few.max_materials = 5;
+  EXPECT_EQ(loadError(scene(3, 5), few), "");
+  const std::string lights = loadError(scene(4, 5), few);
+  EXPECT_NE(lights.find("/lights: the scene needs 4 lights"), std::string::npos) << lights;
+  EXPECT_NE(lights.find("--max-lights"), std::string::npos) << lights;
+  const std::string materials = loadError(scene(3, 6), few);
+  EXPECT_NE(materials.find("/materials: the scene needs 6 materials"), std::string::npos) << materials;
+  EXPECT_NE(materials.find("--max-materials"), std::string::npos) << materials;
+  EXPECT_NE(loadError(scene(65, 1)).find("--max-lights"), std::string::npos);  // the default
 }

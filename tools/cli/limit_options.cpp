@@ -20,6 +20,17 @@ void addLimitOptions(CLI::App* cmd, Limits& limits) {
                   "Most triangles of a tessellation: facets engine, compare (default " +
                       std::to_string(defaults.max_triangles) + ")")
       ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
+  cmd->add_option("--max-lights", limits.max_lights,
+                  "Most lights in a scene (default " + std::to_string(defaults.max_lights) + ")")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
+  cmd->add_option("--max-materials", limits.max_materials,
+                  "Most materials in a scene (default " + std::to_string(defaults.max_materials) + ")")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
+  cmd->add_option("--max-clip-work", limits.max_clip_work,
+                  "Most plane tests of the primitives' clip polyhedra, C(n + 6, 3) (n + 6) - 120 for n clip "
+                  "planes, summed over the scene (default " +
+                      std::to_string(defaults.max_clip_work) + ")")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 62));
 }
 
 }  // namespace qacc
