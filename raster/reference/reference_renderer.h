@@ -18,8 +18,7 @@ constexpr const char* kReferenceRendererVersion = "qacc-reference/4";  // 2: scr
 
 struct ReferenceStats {
   double setup_ms = 0;      // window-space setup and binning
-  double visibility_ms = 0; // per-pixel root finding and depth test
-  double shading_ms = 0;    // shading of the visible points
+  double visibility_ms = 0; // per-pixel root finding, depth test and shading of the winners, tile by tile
   long long pixel_tests = 0;  // (pixel, primitive) pairs evaluated
 };
 

@@ -85,9 +85,8 @@ EngineResult runEngine(const std::string& engine, const Scene& scene, const Engi
     ReferenceStats st;
     r.fb = renderReference(scene, options.threads, &st);
     r.host_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    r.notes.push_back("reference: setup " + std::to_string(st.setup_ms) + " ms, visibility " +
-                      std::to_string(st.visibility_ms) + " ms, shading " + std::to_string(st.shading_ms) +
-                      " ms, " + std::to_string(st.pixel_tests) + " pixel tests");
+    r.notes.push_back("reference: setup " + std::to_string(st.setup_ms) + " ms, visibility and shading " +
+                      std::to_string(st.visibility_ms) + " ms, " + std::to_string(st.pixel_tests) + " pixel tests");
     if (!options.stats_path.empty()) writeRenderStats(engine, scene, options, r, nullptr);
     return r;
   }
