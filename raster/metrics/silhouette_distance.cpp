@@ -9,17 +9,23 @@
 
 namespace qacc {
 
+namespace {
+
+// Whether pixel (x, y) is a boundary pixel of the id buffer (silhouette_distance.h).
+inline bool onBoundary(const UninitVector<std::int32_t>& ids, int width, int height, int x, int y) {
+  const std::size_t i = std::size_t(y) * width + x;
+  const std::int32_t id = ids[i];
+  if (id < 0) return false;
+  return (x > 0 && ids[i - 1] != id) || (x + 1 < width && ids[i + 1] != id) ||
+         (y > 0 && ids[i - std::size_t(width)] != id) || (y + 1 < height && ids[i + std::size_t(width)] != id);
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> boundaryMask(const UninitVector<std::int32_t>& ids, int width, int height) {
   std::vector<std::uint8_t> m(std::size_t(width) * std::size_t(height), 0);
   for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const std::size_t i = std::size_t(y) * width + x;
-      const std::int32_t id = ids[i];
-      if (id < 0) continue;
-      if ((x > 0 && ids[i - 1] != id) || (x + 1 < width && ids[i + 1] != id) ||
-          (y > 0 && ids[i - std::size_t(width)] != id) || (y + 1 < height && ids[i + std::size_t(width)] != id))
-        m[i] = 1;
-    }
+    for (int x = 0; x < width; ++x) m[std::size_t(y) * width + x] = onBoundary(ids, width, height, x, y);
   return m;
 }
 
@@ -40,28 +46,28 @@ double distance(std::uint32_t squared) {
 SilhouetteDistance silhouetteDistance(const FrameBuffer& reference, const FrameBuffer& test, double tolerance) {
   checkSizes(reference, test);
   const int w = reference.width, h = reference.height;
-  const auto ma = boundaryMask(reference.object, w, h);
-  const auto mb = boundaryMask(test.object, w, h);
   SilhouetteDistance s;
   s.tolerance = tolerance;
   double maxd = 0, sumRef = 0, sumTest = 0;
   std::size_t within = 0;
-  // Distances from the boundary pixels of `from` to the boundary of `to`, one distance
-  // transform alive at a time.
-  const auto measure = [&](const std::vector<std::uint8_t>& from, const std::vector<std::uint8_t>& to,
+  // Distances from the boundary pixels of `from` to the boundary of `to`: the boundaries are
+  // read from the ids where they are needed, and one distance transform is alive at a time
+  // (no frame-sized mask: the accuracy line runs beside two frame buffers).
+  const auto measure = [&](const UninitVector<std::int32_t>& from, const UninitVector<std::int32_t>& to,
                            std::size_t& count, double& sum, std::size_t* withinTolerance) {
-    const auto dt = squaredDistanceTransform(to, w, h);
-    for (std::size_t i = 0; i < from.size(); ++i)
-      if (from[i]) {
-        ++count;
-        const double d = distance(dt[i]);
-        maxd = std::max(maxd, d);
-        sum += d;
-        if (withinTolerance && d <= tolerance) ++*withinTolerance;
-      }
+    const auto dt = squaredDistanceTransformOf([&](int x, int y) { return onBoundary(to, w, h, x, y); }, w, h);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (onBoundary(from, w, h, x, y)) {
+          ++count;
+          const double d = distance(dt[std::size_t(y) * w + x]);
+          maxd = std::max(maxd, d);
+          sum += d;
+          if (withinTolerance && d <= tolerance) ++*withinTolerance;
+        }
   };
-  measure(ma, mb, s.reference_boundary, sumRef, &within);
-  measure(mb, ma, s.test_boundary, sumTest, nullptr);
+  measure(reference.object, test.object, s.reference_boundary, sumRef, &within);
+  measure(test.object, reference.object, s.test_boundary, sumTest, nullptr);
   const double sum = sumRef + sumTest;
   const std::size_t n = s.reference_boundary + s.test_boundary;
   if (n == 0) return s;  // neither has a boundary: identical silhouettes

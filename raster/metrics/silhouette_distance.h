@@ -26,7 +26,7 @@ struct SilhouetteDistance {
 };
 
 // Boundary mask (1 = boundary) of an object-id buffer.
-std::vector<std::uint8_t> boundaryMask(const std::vector<std::int32_t>& ids, int width, int height);
+std::vector<std::uint8_t> boundaryMask(const UninitVector<std::int32_t>& ids, int width, int height);
 SilhouetteDistance silhouetteDistance(const FrameBuffer& reference, const FrameBuffer& test,
                                       double tolerance = 1.0);
 // Per-pixel distance map for heat maps: at each boundary pixel of either image, its distance
