@@ -76,6 +76,7 @@ void PixelDatapath::load(const PrimitiveSetup& s) {
   hv_.resize(s.planes.size());
   zkv_.resize(s.planes.size());
   narrow_ = !s.facet && fits64(s, cfg_);
+  clipPasses_ = ClipTest::passes(int(s.planes.size()), cfg_.clip_evaluators) + (s.solid && !s.facet ? 1 : 0);
   invAbsA_ = s.a != 0 ? 1.0 / double(s.a < 0 ? -s.a : s.a) : 0.0;
   const bool stable = cfg_.depth_variant == DepthVariant::Stable;
   switch (cfg_.rounding) {
@@ -195,7 +196,7 @@ template <Rounding R, DepthVariant V, PixelDatapath::Shape S, typename T>
   const int Fz = cfg_.depth_frac_bits, Fi = cfg_.interp_frac_bits;
   const std::int64_t one = std::int64_t(1) << Fz;
   const int np = int(h_.size());
-  o.clipPasses = ClipTest::passes(np, cfg_.clip_evaluators);
+  o.clipPasses = clipPasses_;
   for (int i = 0; i < np; ++i) hv_[std::size_t(i)] = hRange_.fit(h_[std::size_t(i)].raw(), cfg_.overflow, ovf.clip);
   // clampDepth's result, its bounds precomputed (the call only when a clamp happens).
   const auto depth = [&](i128 z) { return z >= depthLo_ && z <= depthHi_ ? z : clampDepth(z, cfg_, ovf); };
@@ -221,7 +222,6 @@ template <Rounding R, DepthVariant V, PixelDatapath::Shape S, typename T>
   if (solid) {
     for (int i = 0; i < np; ++i)
       zkv_[std::size_t(i)] = s.planes[std::size_t(i)].zdir != 0 ? depth(zk_[std::size_t(i)].raw() >> Fi) : 0;
-    o.clipPasses += 1;
     const CapDecision d = CapSelect::decide(s, cfg_, zkv_.data(), hv_.data(), b, c);
     if (d.empty) {
       o.candidate = d.plane >= 0;

@@ -64,6 +64,9 @@ class PixelDatapath {
   }
   // Whether evaluateSpan runs this primitive in 64-bit host registers (for tests).
   bool narrowHostPath() const { return narrow_; }
+  // The loaded primitive's passes through the clip unit, the same at every pixel (every
+  // PixelOutcome::clipPasses): one per clip_evaluators planes, plus one for a solid's caps.
+  int clipPasses() const { return clipPasses_; }
   // For a solid quadric (not a facet): {f <= 0} ∩ clip polyhedron ∩ [0, 1] at the current
   // position as up to 2 intervals of positive length, ascending — what a CSG method needs
   // of each operand; the fixed-point form of raster/pixel/solid_intervals.h, from the same
@@ -92,6 +95,7 @@ class PixelDatapath {
   PixelOutcome (PixelDatapath::*evalFloored_)(OverflowCounters&) = nullptr;
   SpanFn evalSpan_ = nullptr;
   bool narrow_ = false;
+  int clipPasses_ = 1;
   double invAbsA_ = 0;  // 1 / |a| for the 64-bit host path's division by a (depthRootsT)
   // The 64-bit host path's b and c accumulators (b_ and c_ there, the same values; those two
   // are then not advanced: startSpan() again before evaluate() after an evaluateSpan()).

@@ -13,6 +13,7 @@ PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const Hw
   const int n = int(setups.size());
   tr.rows.resize(std::size_t(n));
   tr.first.assign(std::size_t(n) + 1, 0);
+  tr.passes.assign(std::size_t(n), 1);
   std::vector<OverflowCounters> ovf(static_cast<std::size_t>(n));
   const int nt = threads > 0 ? threads : omp_get_max_threads();
   // The spans of every row, and each primitive's pixel count.
@@ -47,6 +48,7 @@ PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const Hw
       if (!s.visible) continue;
       TracedPixel* out = tr.pixels.data() + tr.first[std::size_t(i)];
       pp.load(s);
+      tr.passes[std::size_t(i)] = pp.clipPasses();
       for (const RowSpans& r : tr.rows[std::size_t(i)]) {
         const int y = r.y;
         const Span* sp = r.s;
@@ -58,10 +60,9 @@ PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const Hw
               const PixelOutcome& o = outcomes[j];
               TracedPixel& t = *out++;
               t.z = std::int64_t(o.z);
-              t.cap = std::int16_t(o.cap);
+              t.cap = o.cap;
               t.hit = o.hit;
               t.candidate = o.candidate;
-              t.clipPasses = std::uint16_t(o.clipPasses);
             }
           }
       }

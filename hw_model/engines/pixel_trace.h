@@ -24,15 +24,17 @@ namespace qacc {
 
 // Trivially constructible, without default values: PixelTrace::build sizes the trace
 // without touching it (UninitVector) and its parallel pass writes every field of every
-// pixel, first touching the pages in the threads that fill them.
+// pixel, first touching the pages in the threads that fill them. 8 bytes (bit-fields): the
+// clip passes, the same for every pixel of a primitive, are kept per primitive
+// (PixelTrace::clipPasses), so molecule's trace at 1920x1080 takes 10 MB, not 20.
 struct TracedPixel {
-  std::int64_t z;            // depth, internal format (fits: 0 <= z <= 2^depth_frac_bits)
-  std::int16_t cap;          // cap plane, -1 for a surface point
-  std::uint8_t hit;          // a visible point survived clipping
-  std::uint8_t candidate;    // a point reached the clip unit
-  std::uint16_t clipPasses;
+  std::int64_t z : 46;    // depth, internal format (0 <= z <= 2^depth_frac_bits <= 2^36)
+  std::int64_t cap : 16;  // cap plane, -1 for a surface point (a plane index below 2^15, as the datapath's)
+  bool hit : 1;           // a visible point survived clipping
+  bool candidate : 1;     // a point reached the clip unit
 };
 static_assert(std::is_trivially_default_constructible_v<TracedPixel>);
+static_assert(sizeof(TracedPixel) == 8, "a traced pixel is 8 bytes");
 
 struct RowSpans {  // a row of a primitive with at least one span
   int y = 0, n = 0;
@@ -47,9 +49,12 @@ struct PixelTrace {
   UninitVector<TracedPixel> pixels;
   std::vector<std::size_t> first;           // indexed by primitive, one past the last at the end
   std::vector<std::vector<RowSpans>> rows;  // indexed by primitive: its non-empty rows
+  std::vector<int> passes;                  // indexed by primitive: PixelDatapath::clipPasses
   OverflowCounters overflow;                // datapath overflows of all pixels
   // The k-th pixel the traversal issues for primitive `prim`.
   const TracedPixel& pixel(int prim, int k) const { return pixels[first[std::size_t(prim)] + std::size_t(k)]; }
+  // The clip-unit passes of each of primitive `prim`'s pixels.
+  int clipPasses(int prim) const { return passes[std::size_t(prim)]; }
   static PixelTrace build(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads);
 };
 

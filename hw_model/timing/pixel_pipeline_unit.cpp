@@ -23,8 +23,9 @@ bool PixelPipelineUnit::tick(std::uint64_t now) {
     const PixelToken t = in_.front();
     in_.receive();
     const TracedPixel& o = trace_.pixel(t.prim, t.k);
+    const int passes = trace_.clipPasses(t.prim);
     ++px_.tested;
-    px_.clip_passes += std::uint64_t(o.clipPasses);
+    px_.clip_passes += std::uint64_t(passes);
     if (o.hit) {
       if (zb_) __builtin_prefetch(&zb_->px[zb_->index(t.x, t.y)]);
       ++px_.covered;
@@ -32,7 +33,7 @@ bool PixelPipelineUnit::tick(std::uint64_t now) {
     } else {
       px_.clipped += o.candidate != 0;
     }
-    stages_.accept({o.hit != 0, {t.prim, t.x, t.y, o.cap, o.z}}, std::uint64_t(std::max(1, int(o.clipPasses))));
+    stages_.accept({o.hit, {t.prim, t.x, t.y, int(o.cap), std::int64_t(o.z)}}, std::uint64_t(std::max(1, passes)));
     countItem();
     changed = true;
   }
