@@ -2,7 +2,6 @@
 
 #include <omp.h>
 
-#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -73,29 +72,25 @@ void runCsgCyclePass(const CsgFrame& csg, const FrameSetup& fs, const HwConfig& 
     toZ.push_back(&wires.make<PointToken>(std::size_t(cfg.pixel_fifo_depth)));
     toShading.push_back(&wires.make<PointToken>(std::size_t(cfg.pixel_fifo_depth)));
   }
-  std::vector<std::unique_ptr<Unit>> units;
-  units.push_back(std::make_unique<CsgIssueUnit>(CsgIssueUnit::Params::from(cfg), jobs, bufferFreed, toPipeline));
+  CsgIssueUnit issue(CsgIssueUnit::Params::from(cfg), jobs, bufferFreed, toPipeline);
+  std::vector<CsgIntervalPipelineUnit> pipelines;
+  pipelines.reserve(P);
   for (std::size_t p = 0; p < P; ++p)
-    units.push_back(std::make_unique<CsgIntervalPipelineUnit>("pixel_pipeline_" + std::to_string(p),
-                                                              CsgIntervalPipelineUnit::Params::from(cfg), wires, jobs,
-                                                              *toPipeline[p], *toList[p]));
-  units.push_back(std::make_unique<CsgListUnit>(jobs, toList, toSweep));
-  units.push_back(std::make_unique<CsgSweepUnit>(CsgSweepUnit::Params::from(cfg), jobs, toSweep, bufferFreed, toZ));
+    pipelines.emplace_back("pixel_pipeline_" + std::to_string(p), CsgIntervalPipelineUnit::Params::from(cfg), wires,
+                           jobs, *toPipeline[p], *toList[p]);
+  CsgListUnit list(jobs, toList, toSweep);
+  CsgSweepUnit sweep(CsgSweepUnit::Params::from(cfg), jobs, toSweep, bufferFreed, toZ);
   const std::uint64_t writtenBefore = st.pixels.written;
-  auto zunit = std::make_unique<ZBufferUnit>(ZBufferUnit::Params::from(cfg), cfg, wires, zb, toZ, toShading, st.pixels);
-  zunit->tiesInSceneOrder();
-  units.push_back(std::move(zunit));
-  std::vector<const ShadingUnit*> shading;
-  for (std::size_t p = 0; p < P; ++p) {
-    auto u = std::make_unique<ShadingUnit>("shading_" + std::to_string(p), ShadingUnit::Params::from(cfg), wires,
-                                           *toShading[p]);
-    shading.push_back(u.get());
-    units.push_back(std::move(u));
-  }
+  ZBufferUnit zunit(ZBufferUnit::Params::from(cfg), cfg, wires, zb, toZ, toShading, st.pixels);
+  zunit.tiesInSceneOrder();
+  std::vector<ShadingUnit> shading;
+  shading.reserve(P);
+  for (std::size_t p = 0; p < P; ++p)
+    shading.emplace_back("shading_" + std::to_string(p), ShadingUnit::Params::from(cfg), wires, *toShading[p]);
   const std::uint64_t before = st.cycles;
-  const std::uint64_t cycles = runMachine(wires, units, st.fast_forwarded);
+  const std::uint64_t cycles = runMachine(wires, st.fast_forwarded, issue, pipelines, list, sweep, zunit, shading);
   std::uint64_t delivered = 0;
-  for (const ShadingUnit* u : shading) delivered += u->delivered();
+  for (const ShadingUnit& u : shading) delivered += u.delivered();
   if (delivered != st.pixels.written - writtenBefore)
     throw std::logic_error("hw-cycle: the CSG pass shaded " + std::to_string(delivered) + " of " +
                            std::to_string(st.pixels.written - writtenBefore) + " pixels");
@@ -103,9 +98,10 @@ void runCsgCyclePass(const CsgFrame& csg, const FrameSetup& fs, const HwConfig& 
   st.cycles += cycles;
   // One timeline per unit over the whole frame: a unit of both parts adds its CSG-pass
   // cycles; a unit of one part is idle during the other.
+  std::vector<UnitStats> passStats;
+  appendUnitStats(passStats, issue, pipelines, list, sweep, zunit, shading);
   std::vector<bool> matched(st.units.size(), false);
-  for (const auto& u : units) {
-    const UnitStats& s = u->stats();
+  for (const UnitStats& s : passStats) {
     bool found = false;
     for (std::size_t i = 0; i < st.units.size(); ++i)
       if (st.units[i].name == s.name) {

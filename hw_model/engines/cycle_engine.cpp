@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
-#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -68,49 +68,45 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
   }
 
   // The optional hierarchical Z unit: looked up by traversal, told of writes by the Z unit.
-  std::unique_ptr<HierarchicalZUnit> hiz;
+  std::optional<HierarchicalZUnit> hiz;
   std::vector<std::uint32_t> storedFloors;
   if (cfg.hierarchical_z) {
-    hiz = std::make_unique<HierarchicalZUnit>(HierarchicalZUnit::Params::from(cfg), cfg, scene.width, scene.height);
+    hiz.emplace(HierarchicalZUnit::Params::from(cfg), cfg, scene.width, scene.height);
     storedFloors.reserve(timedSetups.size());
     for (const PrimitiveSetup& s : timedSetups) storedFloors.push_back(ZBufferMemory::storedValue(s.zFloor, cfg));
   }
-  HierarchicalZUnit* hizUnit = hiz.get();
+  HierarchicalZUnit* hizUnit = hiz ? &*hiz : nullptr;
 
-  std::vector<std::unique_ptr<Unit>> units;
-  units.push_back(std::make_unique<HostInterfaceUnit>(HostInterfaceUnit::Params::from(cfg), timedSetups, hostToSetup));
-  auto setupUnit = std::make_unique<SetupUnit>(SetupUnit::Params::from(cfg), timedSetups, hostToSetup, setupToTraversal);
-  const SetupUnit& setup = *setupUnit;
-  units.push_back(std::move(setupUnit));
-  units.push_back(std::make_unique<TraversalUnit>(TraversalUnit::Params::from(cfg), timedSetups, trace, setupToTraversal,
-                                                  toPipeline, hizUnit, std::move(storedFloors)));
+  HostInterfaceUnit host(HostInterfaceUnit::Params::from(cfg), timedSetups, hostToSetup);
+  SetupUnit setup(SetupUnit::Params::from(cfg), timedSetups, hostToSetup, setupToTraversal);
+  TraversalUnit traversal(TraversalUnit::Params::from(cfg), timedSetups, trace, setupToTraversal, toPipeline, hizUnit,
+                          std::move(storedFloors));
   const PixelPipelineUnit::Params pipeParams = PixelPipelineUnit::Params::from(cfg);
+  std::vector<PixelPipelineUnit> pipelines;
+  pipelines.reserve(P);
   for (std::size_t p = 0; p < P; ++p)
-    units.push_back(std::make_unique<PixelPipelineUnit>("pixel_pipeline_" + std::to_string(p), pipeParams, wires,
-                                                        trace, *toPipeline[p], *toZ[p], st.pixels, &zb));
-  auto zunit = std::make_unique<ZBufferUnit>(ZBufferUnit::Params::from(cfg), cfg, wires, zb, toZ, toShading, st.pixels);
-  zunit->reportWritesTo(hizUnit);
-  units.push_back(std::move(zunit));
-  if (hiz) units.push_back(std::move(hiz));  // ticks after traversal (its lookups count as busy)
-  std::vector<const ShadingUnit*> shading;
-  for (std::size_t p = 0; p < P; ++p) {
-    auto u = std::make_unique<ShadingUnit>("shading_" + std::to_string(p), ShadingUnit::Params::from(cfg), wires,
-                                           *toShading[p]);
-    shading.push_back(u.get());
-    units.push_back(std::move(u));
-  }
+    pipelines.emplace_back("pixel_pipeline_" + std::to_string(p), pipeParams, wires, trace, *toPipeline[p], *toZ[p],
+                           st.pixels, &zb);
+  ZBufferUnit zunit(ZBufferUnit::Params::from(cfg), cfg, wires, zb, toZ, toShading, st.pixels);
+  zunit.reportWritesTo(hizUnit);
+  std::vector<ShadingUnit> shading;
+  shading.reserve(P);
+  for (std::size_t p = 0; p < P; ++p)
+    shading.emplace_back("shading_" + std::to_string(p), ShadingUnit::Params::from(cfg), wires, *toShading[p]);
 
+  // The tick order within a cycle: the hierarchical Z unit ticks after traversal (its
+  // lookups count as busy).
   const auto loop0 = std::chrono::steady_clock::now();
-  runMachine(wires, units, st.fast_forwarded);
+  runMachine(wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz, shading);
   st.cycles = wires.now();
   st.loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0).count();
-  for (auto& u : units) st.units.push_back(u->stats());
+  appendUnitStats(st.units, host, setup, traversal, pipelines, zunit, hiz, shading);
   if (hizUnit) {
     st.hiz = hizUnit->counters;
     st.hiz.enabled = true;
   }
   std::uint64_t delivered = 0;
-  for (const ShadingUnit* u : shading) delivered += u->delivered();
+  for (const ShadingUnit& u : shading) delivered += u.delivered();
   if (delivered != st.pixels.written)
     throw std::logic_error("hw-cycle: shading delivered " + std::to_string(delivered) + " of " +
                            std::to_string(st.pixels.written) + " pixels");

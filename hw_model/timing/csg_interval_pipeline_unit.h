@@ -29,9 +29,9 @@ class CsgIntervalPipelineUnit final : public Unit {
   CsgIntervalPipelineUnit(const std::string& name, const Params& p, ChannelRegistry& wires,
                           const std::vector<CsgJob>& jobs, Channel<CsgToken>& in, Channel<CsgToken>& out)
       : Unit(name), jobs_(jobs), in_(in), out_(out), stages_(wires, std::uint64_t(p.latency)) {}
-  bool tick(std::uint64_t now) override;
-  std::uint64_t nextEvent() const override { return stages_.nextEvent(in_.ready()); }
-  bool holdsWork() const override { return stages_.holdsWork(); }
+  bool tick(std::uint64_t now);
+  std::uint64_t nextEvent() const { return stages_.nextEvent(in_.ready()); }
+  bool holdsWork() const { return stages_.holdsWork(); }
 
  private:
   const std::vector<CsgJob>& jobs_;

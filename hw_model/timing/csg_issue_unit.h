@@ -32,9 +32,9 @@ class CsgIssueUnit final : public Unit {
   CsgIssueUnit(const Params& p, const std::vector<CsgJob>& jobs, Channel<int>& bufferFreed,
                std::vector<Channel<CsgToken>*> out)
       : Unit("csg_issue"), p_(p), jobs_(jobs), freed_(bufferFreed), out_(std::move(out)), free_(p.list_buffers) {}
-  bool tick(std::uint64_t now) override;
-  std::uint64_t nextEvent() const override;
-  bool holdsWork() const override { return job_ >= 0 || next_ < jobs_.size(); }
+  bool tick(std::uint64_t now);
+  std::uint64_t nextEvent() const;
+  bool holdsWork() const { return job_ >= 0 || next_ < jobs_.size(); }
 
  private:
   Params p_;

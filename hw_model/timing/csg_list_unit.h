@@ -21,9 +21,9 @@ class CsgListUnit final : public Unit {
   CsgListUnit(const std::vector<CsgJob>& jobs, std::vector<Channel<CsgToken>*> in, Channel<int>& toSweep)
       : Unit("csg_list"), jobs_(jobs), in_(std::move(in)), out_(toSweep), busyUntil_(in_.size(), 0),
         markers_(jobs.size(), 0) {}
-  bool tick(std::uint64_t now) override;
-  std::uint64_t nextEvent() const override;
-  bool holdsWork() const override;
+  bool tick(std::uint64_t now);
+  std::uint64_t nextEvent() const;
+  bool holdsWork() const;
 
  private:
   const std::vector<CsgJob>& jobs_;

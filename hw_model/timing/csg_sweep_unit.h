@@ -26,9 +26,9 @@ class CsgSweepUnit final : public Unit {
                std::vector<Channel<PointToken>*> out)
       : Unit("csg_sweep"), p_(p), jobs_(jobs), in_(in), freed_(bufferFreed), out_(std::move(out)),
         queue_(out_.size()), pos_(out_.size(), 0), current_(out_.size(), -1), doneAt_(out_.size(), 0) {}
-  bool tick(std::uint64_t now) override;
-  std::uint64_t nextEvent() const override;
-  bool holdsWork() const override { return job_ >= 0; }
+  bool tick(std::uint64_t now);
+  std::uint64_t nextEvent() const;
+  bool holdsWork() const { return job_ >= 0; }
 
  private:
   Params p_;

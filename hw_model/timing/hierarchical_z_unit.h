@@ -39,8 +39,14 @@ class HierarchicalZUnit final : public Unit {
     pending_.push_back({now + std::uint64_t(p_.update_latency), x, y, stored});
     ++updates_;
   }
-  bool tick(std::uint64_t now) override;
-  bool holdsWork() const override { return false; }  // nothing waits on a tile update
+  bool tick(std::uint64_t now) {
+    applyDue(now);
+    // Busy in a cycle with a lookup or a tile update (the traversal unit ticks first).
+    if (lastActive_ == now) countBusy();
+    else countIdle();
+    return false;  // the tile memory's state moves no token
+  }
+  bool holdsWork() const { return false; }  // nothing waits on a tile update
   const Params& params() const { return p_; }
   HierarchicalZCounters counters;
 
@@ -50,7 +56,15 @@ class HierarchicalZUnit final : public Unit {
     int x, y;
     std::uint32_t stored;
   };
-  void applyDue(std::uint64_t now);
+  // The tile memory takes the writes due by `now`.
+  void applyDue(std::uint64_t now) {
+    while (!pending_.empty() && pending_.front().due <= now) {
+      const Update& u = pending_.front();
+      memory_.write(u.x, u.y, u.stored);
+      pending_.pop_front();
+      lastActive_ = now;
+    }
+  }
   Params p_;
   HierarchicalZMemory memory_;
   DelayQueue<Update> pending_;

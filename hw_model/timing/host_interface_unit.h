@@ -30,9 +30,9 @@ class HostInterfaceUnit final : public Unit {
 
   HostInterfaceUnit(const Params& p, const std::vector<PrimitiveSetup>& setups, Channel<PrimitiveToken>& out)
       : Unit("host_interface"), p_(p), setups_(setups), out_(out) {}
-  bool tick(std::uint64_t now) override;
-  std::uint64_t nextEvent() const override { return busy_ ? readyAt_ : Unit::nextEvent(); }
-  bool holdsWork() const override { return next_ < int(setups_.size()) || busy_; }
+  bool tick(std::uint64_t now);
+  std::uint64_t nextEvent() const { return busy_ ? readyAt_ : kNoEvent; }
+  bool holdsWork() const { return next_ < int(setups_.size()) || busy_; }
 
  private:
   Params p_;
@@ -42,5 +42,30 @@ class HostInterfaceUnit final : public Unit {
   bool busy_ = false;
   std::uint64_t readyAt_ = 0;
 };
+
+inline bool HostInterfaceUnit::tick(std::uint64_t now) {
+  bool changed = false;
+  if (!busy_ && next_ < int(setups_.size())) {
+    busy_ = true;
+    // The last word arrives transferCycles - 1 cycles after the first; the descriptor is
+    // handed on in that cycle.
+    readyAt_ = now + std::uint64_t(p_.transferCycles(setups_[std::size_t(next_)].descriptorWords)) - 1;
+    changed = true;
+  }
+  if (busy_ && now >= readyAt_) {
+    if (out_.canSend()) {
+      out_.send(next_++);
+      busy_ = false;
+      countItem();
+      changed = true;
+    } else {
+      countStall();
+      return changed;
+    }
+  }
+  if (busy_ || changed) countBusy();
+  else countIdle();
+  return changed;
+}
 
 }  // namespace qacc

@@ -5,6 +5,7 @@
 // evaluators; results leave in order after the pipeline's latency; pixels with a visible
 // point go on to the Z-buffer, the others retire.
 #pragma once
+#include <algorithm>
 #include <string>
 
 #include "hw_model/config/hw_config.h"
@@ -48,9 +49,9 @@ class PixelPipelineUnit final : public Unit {
                     Channel<PixelToken>& in, Channel<PointToken>& out, PixelCounters& px,
                     const ZBufferMemory* zb = nullptr)
       : Unit(name), trace_(trace), in_(in), out_(out), px_(px), stages_(wires, std::uint64_t(p.latency)), zb_(zb) {}
-  bool tick(std::uint64_t now) override;
-  std::uint64_t nextEvent() const override { return stages_.nextEvent(in_.ready()); }
-  bool holdsWork() const override { return stages_.holdsWork(); }
+  bool tick(std::uint64_t now);
+  std::uint64_t nextEvent() const { return stages_.nextEvent(in_.ready()); }
+  bool holdsWork() const { return stages_.holdsWork(); }
 
  private:
   struct InFlight {
@@ -64,5 +65,42 @@ class PixelPipelineUnit final : public Unit {
   Pipeline<InFlight> stages_;
   const ZBufferMemory* zb_;
 };
+
+inline bool PixelPipelineUnit::tick(std::uint64_t now) {
+  (void)now;
+  bool changed = false, stalled = false;
+  while (stages_.done()) {
+    const InFlight& f = stages_.front();
+    if (f.hit) {
+      if (!out_.canSend()) {
+        stalled = true;
+        break;
+      }
+      out_.send(f.point);
+    }
+    stages_.retire();
+    changed = true;
+  }
+  if (stages_.canAccept() && in_.ready()) {
+    const PixelToken t = in_.front();
+    in_.receive();
+    const TracedPixel& o = trace_.pixel(t.prim, t.k);
+    const int passes = trace_.clipPasses(t.prim);
+    ++px_.tested;
+    px_.clip_passes += std::uint64_t(passes);
+    if (o.hit) {
+      if (zb_) __builtin_prefetch(&zb_->px[zb_->index(t.x, t.y)]);
+      ++px_.covered;
+      px_.caps += o.cap >= 0;
+    } else {
+      px_.clipped += o.candidate != 0;
+    }
+    stages_.accept({o.hit, {t.prim, t.x, t.y, int(o.cap), std::int64_t(o.z)}}, std::uint64_t(std::max(1, passes)));
+    countItem();
+    changed = true;
+  }
+  countCycle(changed, stalled, stages_.holdsWork());
+  return changed;
+}
 
 }  // namespace qacc

@@ -32,9 +32,9 @@ class SetupUnit final : public Unit {
   SetupUnit(const Params& p, const std::vector<PrimitiveSetup>& setups, Channel<PrimitiveToken>& in,
             Channel<PrimitiveToken>& out)
       : Unit("setup"), p_(p), setups_(setups), in_(in), out_(out) {}
-  bool tick(std::uint64_t now) override;
-  std::uint64_t nextEvent() const override { return current_ >= 0 && readyAt_ > 0 ? readyAt_ : Unit::nextEvent(); }
-  bool holdsWork() const override { return current_ >= 0; }
+  bool tick(std::uint64_t now);
+  std::uint64_t nextEvent() const { return current_ >= 0 && readyAt_ > 0 ? readyAt_ : kNoEvent; }
+  bool holdsWork() const { return current_ >= 0; }
   std::uint64_t culled() const { return culled_; }
 
  private:
@@ -46,5 +46,33 @@ class SetupUnit final : public Unit {
   std::uint64_t readyAt_ = 0;
   std::uint64_t culled_ = 0;
 };
+
+inline bool SetupUnit::tick(std::uint64_t now) {
+  bool changed = false;
+  if (current_ >= 0 && now >= readyAt_) {
+    if (setups_[std::size_t(current_)].culled) {  // dropped after the box test
+      current_ = -1;
+      ++culled_;
+      changed = true;
+    } else if (out_.canSend()) {
+      out_.send(current_);
+      current_ = -1;
+      changed = true;
+    } else {
+      countStall();
+      return false;
+    }
+  }
+  if (current_ < 0 && in_.ready()) {
+    current_ = in_.front();
+    in_.receive();
+    readyAt_ = now + std::uint64_t(p_.cycles(setups_[std::size_t(current_)]));
+    countItem();
+    changed = true;
+  }
+  if (current_ >= 0 || changed) countBusy();
+  else countIdle();
+  return changed;
+}
 
 }  // namespace qacc

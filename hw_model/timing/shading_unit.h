@@ -25,9 +25,9 @@ class ShadingUnit final : public Unit {
 
   ShadingUnit(const std::string& name, const Params& p, ChannelRegistry& wires, Channel<PointToken>& in)
       : Unit(name), p_(p), in_(in), stages_(wires, std::uint64_t(p.latency)) {}
-  bool tick(std::uint64_t now) override;
-  std::uint64_t nextEvent() const override { return stages_.nextEvent(in_.ready()); }
-  bool holdsWork() const override { return stages_.holdsWork(); }
+  bool tick(std::uint64_t now);
+  std::uint64_t nextEvent() const { return stages_.nextEvent(in_.ready()); }
+  bool holdsWork() const { return stages_.holdsWork(); }
   std::uint64_t delivered() const { return delivered_; }
 
  private:
@@ -39,5 +39,24 @@ class ShadingUnit final : public Unit {
   Pipeline<InFlight> stages_;
   std::uint64_t delivered_ = 0;
 };
+
+inline bool ShadingUnit::tick(std::uint64_t now) {
+  (void)now;
+  bool changed = false;
+  while (stages_.done()) {
+    ++delivered_;
+    stages_.retire();
+    changed = true;
+  }
+  if (stages_.canAccept() && in_.ready()) {
+    stages_.accept({}, std::uint64_t(p_.cycles_per_pixel));
+    in_.receive();
+    countItem();
+    changed = true;
+  }
+  if (changed || stages_.holdsWork()) countBusy();
+  else countIdle();
+  return changed;
+}
 
 }  // namespace qacc

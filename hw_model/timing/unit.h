@@ -3,8 +3,15 @@
 //  - busy:  the unit holds or accepted work this cycle and made progress;
 //  - stall: it had a finished result but could not hand it on (full channel, busy bank);
 //  - idle:  nothing to do.
-// tick() returns true when the unit changed any state (used by the cycle engine to detect
-// cycles where nothing happens and fast-forward to the next timed event).
+// Every unit derives from Unit (its counters) and has, by name, what the clock
+// (engines/machine_run.h) calls on it:
+//  - bool tick(std::uint64_t now): one cycle; true when the unit changed any state (the
+//    clock fast-forwards over cycles where nothing happens);
+//  - bool holdsWork() const: true while the unit holds work (in flight or buffered);
+//  - std::uint64_t nextEvent() const: the earliest future cycle at which the unit will act
+//    without new input (Unit::kNoEvent: none; Unit's own nextEvent for a unit that never does).
+// The clock ticks the units through their concrete types (no virtual call: a tick is
+// inlined into the loop), so the tick bodies the loop runs every cycle are in the headers.
 // Every unit has its own `Params`, derived from the flat configuration (HwConfig) by
 // `Params::from`, which owns the unit's latency formula; units talk through channels
 // (channel.h) and carry tokens (tokens.h); the arithmetic is the datapath's (datapath/),
@@ -20,16 +27,13 @@ namespace qacc {
 
 class Unit {
  public:
+  static constexpr std::uint64_t kNoEvent = std::numeric_limits<std::uint64_t>::max();
   explicit Unit(std::string name) { stats_.name = std::move(name); }
-  virtual ~Unit() = default;
-  virtual bool tick(std::uint64_t now) = 0;
-  // Earliest future cycle at which the unit will act without new input (UINT64_MAX: none).
-  virtual std::uint64_t nextEvent() const { return std::numeric_limits<std::uint64_t>::max(); }
-  // True while the unit holds work (in flight or buffered).
-  virtual bool holdsWork() const = 0;
+  // A unit that never acts without new input (units that do hide this with their own).
+  std::uint64_t nextEvent() const { return kNoEvent; }
   // Accounts `n` cycles skipped by fast-forward (nothing moved: busy if holding work).
-  void skip(std::uint64_t n) {
-    if (holdsWork()) stats_.busy += n;
+  void skip(std::uint64_t n, bool holdingWork) {
+    if (holdingWork) stats_.busy += n;
     else stats_.idle += n;
   }
   const UnitStats& stats() const { return stats_; }

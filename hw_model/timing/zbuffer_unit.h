@@ -12,13 +12,12 @@
 #include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/zbuffer_memory.h"
 #include "hw_model/timing/channel.h"
+#include "hw_model/timing/hierarchical_z_unit.h"
 #include "hw_model/timing/pipeline.h"
 #include "hw_model/timing/tokens.h"
 #include "hw_model/timing/unit.h"
 
 namespace qacc {
-
-class HierarchicalZUnit;
 
 class ZBufferUnit final : public Unit {
  public:
@@ -33,9 +32,9 @@ class ZBufferUnit final : public Unit {
 
   ZBufferUnit(const Params& p, const HwConfig& cfg, ChannelRegistry& wires, ZBufferMemory& zb,
               std::vector<Channel<PointToken>*> in, std::vector<Channel<PointToken>*> out, PixelCounters& px);
-  bool tick(std::uint64_t now) override;
-  std::uint64_t nextEvent() const override;
-  bool holdsWork() const override;
+  bool tick(std::uint64_t now);
+  std::uint64_t nextEvent() const;
+  bool holdsWork() const { return inFlight_ != 0; }
   std::uint64_t conflicts() const { return conflicts_; }
   // Equal stored depths go to the primitive earlier in scene order (ZBufferMemory::
   // testAndWriteInSceneOrder): for primitives drawn after later ones (the CSG pass).
@@ -56,10 +55,60 @@ class ZBufferUnit final : public Unit {
   int bankOf(int x, int y) const { return ZBufferMemory::bankOf(x, y, p_.banks); }
   std::vector<std::uint64_t> bankFree_;
   std::vector<Pipeline<InFlight>> reads_;  // per pipeline port
+  std::size_t inFlight_ = 0;               // requests in the read pipelines, all ports
   std::uint64_t conflicts_ = 0;
   std::size_t rr_ = 0;
   bool sceneOrderTies_ = false;
   HierarchicalZUnit* hiz_ = nullptr;
 };
+
+inline bool ZBufferUnit::tick(std::uint64_t now) {
+  bool changed = false, stalled = false;
+  const std::size_t P = in_.size();
+  for (std::size_t p = 0; p < P; ++p) {
+    Pipeline<InFlight>& q = reads_[p];
+    while (q.done()) {
+      if (q.front().pass) {
+        if (!out_[p]->canSend()) {
+          stalled = true;
+          break;
+        }
+        out_[p]->send(q.front().point);
+      }
+      q.retire();
+      --inFlight_;
+      changed = true;
+    }
+  }
+  // Issue: one request per pipeline, round-robin priority on bank conflicts.
+  for (std::size_t k = 0; k < P; ++k) {
+    const std::size_t p = rr_ + k < P ? rr_ + k : rr_ + k - P;
+    Channel<PointToken>& in = *in_[p];
+    if (!in.ready()) continue;
+    const PointToken& r = in.front();
+    const int bank = bankOf(r.x, r.y);
+    if (bankFree_[std::size_t(bank)] > now) {
+      ++conflicts_;
+      stalled = true;
+      continue;
+    }
+    bankFree_[std::size_t(bank)] = now + std::uint64_t(p_.bank_busy);
+    const std::size_t pix = zb_.index(r.x, r.y);
+    const std::uint32_t stored = ZBufferMemory::storedValue(r.z, cfg_);
+    const bool pass = sceneOrderTies_ ? zb_.testAndWriteInSceneOrder(pix, stored, r.prim, r.z, r.cap)
+                                      : zb_.testAndWrite(pix, stored, r.prim, r.z, r.cap);
+    if (pass && hiz_) hiz_->noteWrite(now, r.x, r.y, stored);
+    if (pass) ++px_.written;
+    else ++px_.depth_rejected;
+    reads_[p].accept({pass, r});
+    ++inFlight_;
+    in.receive();
+    countItem();
+    changed = true;
+  }
+  if (++rr_ == P) rr_ = 0;
+  countCycle(changed, stalled, holdsWork());
+  return changed;
+}
 
 }  // namespace qacc

@@ -2,7 +2,6 @@
 // commit, latency, capacity and back-pressure; the loop over the units (engines/machine_run.h).
 #include <gtest/gtest.h>
 
-#include <memory>
 #include <vector>
 
 #include "hw_model/engines/machine_run.h"
@@ -156,11 +155,9 @@ TEST(MachineRun, AUnitsPipelineKeepsTheFrameGoingUntilItsLastItemLeaves) {
   in.send({0, 1, 2, -1, 100});
   ShadingUnit::Params p;
   p.latency = 12;
-  std::vector<std::unique_ptr<Unit>> units;
-  units.push_back(std::make_unique<ShadingUnit>("shading", p, wires, in));
-  const ShadingUnit& shading = static_cast<const ShadingUnit&>(*units[0]);
+  ShadingUnit shading("shading", p, wires, in);
   std::uint64_t fastForwarded = 0;
-  const std::uint64_t cycles = runMachine(wires, units, fastForwarded);
+  const std::uint64_t cycles = runMachine(wires, fastForwarded, shading);
   EXPECT_EQ(cycles, 14u) << "cycles 0 to 13";
   EXPECT_EQ(shading.delivered(), 1u);
   EXPECT_EQ(fastForwarded, 10u) << "cycles 3 to 12";
