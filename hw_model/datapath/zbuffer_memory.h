@@ -69,6 +69,19 @@ struct ZBufferMemory {
     const i128 top = (i128(1) << cfg.zbuffer_bits) - 1;
     return std::uint32_t(v < 0 ? 0 : (v > top ? top : v));
   }
+  // storedValue for a depth held in 64 bits (every depth the pixel datapath hands on:
+  // |z| < 2^40, depth_bits <= 40), the format's shift and top computed once per frame.
+  struct StoredFormat {
+    int shift = 0;         // depth_frac_bits - zbuffer_bits (0 to 28)
+    std::int64_t top = 0;  // 2^zbuffer_bits - 1
+    static StoredFormat from(const HwConfig& cfg) {
+      return {cfg.depth_frac_bits - cfg.zbuffer_bits, (std::int64_t(1) << cfg.zbuffer_bits) - 1};
+    }
+    std::uint32_t operator()(std::int64_t depth) const {
+      const std::int64_t v = depth >> shift;
+      return std::uint32_t(v < 0 ? 0 : (v > top ? top : v));
+    }
+  };
   static int bankOf(int x, int y, int banks) { return interleavedUnit(x, y, banks); }
 };
 

@@ -4,10 +4,12 @@
 // unit's own stages are a Pipeline, pipeline.h) counted at the start of the cycle: a slot freed
 // by a receive during cycle t can be refilled from t + 1, so the order in which units
 // tick within a cycle does not matter. Channels are made by a ChannelRegistry
-// (channel_registry.h), which holds the current cycle. A channel commits itself lazily: its
-// first send or receive of a cycle starts the cycle's counts (the occupancy at the start of
-// the cycle is the occupancy after the last cycle that touched it), and it tells the
-// registry that something moved, so no per-cycle commit pass over the channels is needed.
+// (channel_registry.h), which holds the current cycle. A channel keeps its two-phase state
+// itself: it counts the receives of the current cycle (its first receive of a cycle starts
+// the count), so the occupancy at the start of the cycle is what it holds plus what left it
+// during the cycle, and it tells the registry that something moved, so no per-cycle commit
+// pass over the channels is needed. The oldest item's arrival is kept beside the queue, so
+// the receiver's poll (`ready`) is one comparison.
 #pragma once
 #include <cassert>
 #include <cstddef>
@@ -34,31 +36,36 @@ class Channel : public ChannelBase {
 
   // `moves`: the registry's count of sends and receives in the current cycle.
   Channel(const std::uint64_t& now, std::size_t capacity, std::uint64_t& moves)
-      : now_(now), capacity_(capacity), moves_(moves) {}
+      : now_(now), capacity_(capacity), limit_(capacity == 0 ? std::numeric_limits<std::size_t>::max() : capacity),
+        moves_(moves) {}
   // Sender: room for one more this cycle? (The occupancy at the start of the cycle plus what
-  // was sent during it; a receive frees its slot from the next cycle.)
-  bool canSend() const {
-    if (capacity_ == 0) return true;
-    return cycle_ == now_ ? atStart_ + sent_ < capacity_ : q_.size() < capacity_;
-  }
+  // was sent during it, i.e. what it holds now plus what was received during the cycle: a
+  // receive frees its slot from the next cycle.)
+  bool canSend() const { return q_.size() + (receivedIn_ == now_ ? received_ : 0) < limit_; }
   void send(const T& v, std::uint64_t delay = 1) {
     assert(delay >= 1 && canSend());
     const std::uint64_t arrival = now_ + delay;
     assert(q_.empty() || q_.back().arrival <= arrival);  // items leave in order
-    touch();
+    if (q_.empty()) head_ = arrival;
     q_.push_back({arrival, v});
-    ++sent_;
+    ++moves_;
   }
   // Receiver: the oldest item, once it has arrived.
-  bool ready() const { return !q_.empty() && q_.front().arrival <= now_; }
+  bool ready() const { return head_ <= now_; }
   const T& front() const { return q_.front().item; }
   void receive() {
     assert(ready());
-    touch();
+    if (receivedIn_ != now_) {
+      receivedIn_ = now_;
+      received_ = 0;
+    }
+    ++received_;
     q_.pop_front();
+    head_ = q_.empty() ? kNever : q_.front().arrival;
+    ++moves_;
   }
   // Cycle at which the oldest item arrives (kNever when the channel is empty).
-  std::uint64_t nextArrival() const { return q_.empty() ? kNever : q_.front().arrival; }
+  std::uint64_t nextArrival() const { return head_; }
   bool empty() const { return q_.empty(); }
   std::size_t size() const { return q_.size(); }
   std::size_t capacity() const { return capacity_; }
@@ -70,21 +77,14 @@ class Channel : public ChannelBase {
     std::uint64_t arrival;
     T item;
   };
-  // Every send or receive: the first of a cycle starts the cycle's counts.
-  void touch() {
-    if (cycle_ != now_) {
-      cycle_ = now_;
-      atStart_ = q_.size();
-      sent_ = 0;
-    }
-    ++moves_;
-  }
   const std::uint64_t& now_;
   std::size_t capacity_;
+  std::size_t limit_;  // the capacity, or the largest size_t for an unbounded channel
   std::uint64_t& moves_;
   DelayQueue<Entry> q_;
-  std::uint64_t cycle_ = kNever;  // the cycle atStart_ and sent_ belong to
-  std::size_t atStart_ = 0, sent_ = 0;
+  std::uint64_t head_ = kNever;        // the oldest item's arrival (kNever: empty)
+  std::uint64_t receivedIn_ = kNever;  // the cycle received_ counts the receives of
+  std::size_t received_ = 0;
 };
 
 }  // namespace qacc

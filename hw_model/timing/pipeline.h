@@ -19,6 +19,7 @@ namespace qacc {
 template <typename T>
 class Pipeline {
  public:
+  static constexpr std::uint64_t kNever = std::numeric_limits<std::uint64_t>::max();
   Pipeline(const ChannelRegistry& registry, std::uint64_t latency) : now_(registry.clock()), latency_(latency) {
     assert(latency >= 1);  // an item leaves in a later cycle than it entered
   }
@@ -26,20 +27,23 @@ class Pipeline {
   // Input side.
   bool canAccept() const { return now_ >= nextAccept_; }
   void accept(const T& item, std::uint64_t interval = 1) {
-    stages_.push_back({now_ + latency_, item});
+    const std::uint64_t finish = now_ + latency_;
+    if (stages_.empty()) head_ = finish;
+    stages_.push_back({finish, item});
     nextAccept_ = now_ + interval;
   }
   // Output side: the oldest item, once its latency has passed.
-  bool done() const { return !stages_.empty() && stages_.front().finish <= now_; }
+  bool done() const { return head_ <= now_; }
   const T& front() const { return stages_.front().item; }
-  void retire() { stages_.pop_front(); }
+  void retire() {
+    stages_.pop_front();
+    head_ = stages_.empty() ? kNever : stages_.front().finish;
+  }
   bool holdsWork() const { return !stages_.empty(); }
   // The next cycle at which the pipeline acts by itself: its oldest item finishing or,
   // when input waits, its next accept.
   std::uint64_t nextEvent(bool inputWaiting) const {
-    std::uint64_t t = stages_.empty() ? std::numeric_limits<std::uint64_t>::max() : stages_.front().finish;
-    if (inputWaiting) t = std::min(t, nextAccept_);
-    return t;
+    return inputWaiting ? std::min(head_, nextAccept_) : head_;
   }
 
  private:
@@ -51,6 +55,7 @@ class Pipeline {
   std::uint64_t latency_;
   std::uint64_t nextAccept_ = 0;
   DelayQueue<Stage> stages_;
+  std::uint64_t head_ = kNever;  // the oldest item's finish (kNever: empty)
 };
 
 }  // namespace qacc

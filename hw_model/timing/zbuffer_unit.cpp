@@ -7,18 +7,19 @@ namespace qacc {
 ZBufferUnit::ZBufferUnit(const Params& p, const HwConfig& cfg, ChannelRegistry& wires, ZBufferMemory& zb,
                          std::vector<Channel<PointToken>*> in, std::vector<Channel<PointToken>*> out,
                          PixelCounters& px)
-    : Unit("zbuffer"), p_(p), cfg_(cfg), zb_(zb), in_(std::move(in)), out_(std::move(out)), px_(px),
+    : Unit("zbuffer"), p_(p), stored_(ZBufferMemory::StoredFormat::from(cfg)), zb_(zb), px_(px),
       bankFree_(std::size_t(p.banks), 0) {
-  reads_.reserve(in_.size());
-  for (std::size_t i = 0; i < in_.size(); ++i) reads_.emplace_back(wires, std::uint64_t(p.read_latency));
+  ports_.reserve(in.size());
+  for (std::size_t i = 0; i < in.size(); ++i)
+    ports_.push_back({in[i], out[i], Pipeline<InFlight>(wires, std::uint64_t(p.read_latency))});
 }
 
 std::uint64_t ZBufferUnit::nextEvent() const {
   std::uint64_t t = kNoEvent;
-  for (std::size_t p = 0; p < in_.size(); ++p) {
-    t = std::min(t, reads_[p].nextEvent(false));
-    if (in_[p]->ready()) {
-      const PointToken& r = in_[p]->front();
+  for (const Port& port : ports_) {
+    t = std::min(t, port.reads.nextEvent(false));
+    if (port.in->ready()) {
+      const PointToken& r = port.in->front();
       t = std::min(t, bankFree_[std::size_t(bankOf(r.x, r.y))]);
     }
   }

@@ -47,15 +47,20 @@ class ZBufferUnit final : public Unit {
     bool pass;
     PointToken point;
   };
+  // A pipeline's port: its requests, its read pipeline, its shading unit.
+  struct Port {
+    Channel<PointToken>* in;
+    Channel<PointToken>* out;
+    Pipeline<InFlight> reads;
+  };
   Params p_;
-  const HwConfig& cfg_;  // the stored Z format (ZBufferMemory::storedValue)
+  ZBufferMemory::StoredFormat stored_;  // the stored Z format
   ZBufferMemory& zb_;
-  std::vector<Channel<PointToken>*> in_, out_;
+  std::vector<Port> ports_;
   PixelCounters& px_;
   int bankOf(int x, int y) const { return ZBufferMemory::bankOf(x, y, p_.banks); }
   std::vector<std::uint64_t> bankFree_;
-  std::vector<Pipeline<InFlight>> reads_;  // per pipeline port
-  std::size_t inFlight_ = 0;               // requests in the read pipelines, all ports
+  std::size_t inFlight_ = 0;  // requests in the read pipelines, all ports
   std::uint64_t conflicts_ = 0;
   std::size_t rr_ = 0;
   bool sceneOrderTies_ = false;
@@ -64,43 +69,46 @@ class ZBufferUnit final : public Unit {
 
 inline bool ZBufferUnit::tick(std::uint64_t now) {
   bool changed = false, stalled = false;
-  const std::size_t P = in_.size();
-  for (std::size_t p = 0; p < P; ++p) {
-    Pipeline<InFlight>& q = reads_[p];
-    while (q.done()) {
-      if (q.front().pass) {
-        if (!out_[p]->canSend()) {
-          stalled = true;
-          break;
+  const std::size_t P = ports_.size();
+  Port* const ports = ports_.data();
+  if (inFlight_ != 0) {
+    for (std::size_t p = 0; p < P; ++p) {
+      Pipeline<InFlight>& q = ports[p].reads;
+      while (q.done()) {
+        if (q.front().pass) {
+          if (!ports[p].out->canSend()) {
+            stalled = true;
+            break;
+          }
+          ports[p].out->send(q.front().point);
         }
-        out_[p]->send(q.front().point);
+        q.retire();
+        --inFlight_;
+        changed = true;
       }
-      q.retire();
-      --inFlight_;
-      changed = true;
     }
   }
   // Issue: one request per pipeline, round-robin priority on bank conflicts.
   for (std::size_t k = 0; k < P; ++k) {
     const std::size_t p = rr_ + k < P ? rr_ + k : rr_ + k - P;
-    Channel<PointToken>& in = *in_[p];
+    Channel<PointToken>& in = *ports[p].in;
     if (!in.ready()) continue;
     const PointToken& r = in.front();
-    const int bank = bankOf(r.x, r.y);
-    if (bankFree_[std::size_t(bank)] > now) {
+    std::uint64_t& bankFree = bankFree_[std::size_t(bankOf(r.x, r.y))];
+    if (bankFree > now) {
       ++conflicts_;
       stalled = true;
       continue;
     }
-    bankFree_[std::size_t(bank)] = now + std::uint64_t(p_.bank_busy);
+    bankFree = now + std::uint64_t(p_.bank_busy);
     const std::size_t pix = zb_.index(r.x, r.y);
-    const std::uint32_t stored = ZBufferMemory::storedValue(r.z, cfg_);
+    const std::uint32_t stored = stored_(r.z);
     const bool pass = sceneOrderTies_ ? zb_.testAndWriteInSceneOrder(pix, stored, r.prim, r.z, r.cap)
                                       : zb_.testAndWrite(pix, stored, r.prim, r.z, r.cap);
     if (pass && hiz_) hiz_->noteWrite(now, r.x, r.y, stored);
     if (pass) ++px_.written;
     else ++px_.depth_rejected;
-    reads_[p].accept({pass, r});
+    ports[p].reads.accept({pass, r});
     ++inFlight_;
     in.receive();
     countItem();
