@@ -1,0 +1,81 @@
+// The facets engine's renderer is a module the qacc executable loads on demand
+// (raster/osmesa/facets_module.h): the executable itself needs no Mesa, and a missing module
+// is a clear error, not a crash.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "raster/osmesa/osmesa_renderer.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ShellRun {
+  int status = -1;
+  std::string out;
+};
+
+ShellRun shell(const std::string& cmd, const fs::path& outFile) {
+  const int raw = std::system((cmd + " > \"" + outFile.string() + "\" 2>&1").c_str());
+  ShellRun r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream in(outFile);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  r.out = ss.str();
+  return r;
+}
+
+fs::path tempDir() {
+  const fs::path d = fs::temp_directory_path() / ("qacc_facets_module_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+}  // namespace
+
+// Mesa (libOSMesa, and through it libLLVM, z3 and ICU) is not among the libraries the
+// executable needs: every command but the facets engine starts without it.
+TEST(FacetsModule, TheExecutableDoesNotNeedMesa) {
+  const ShellRun r = shell("readelf -d \"" + std::string(QACC_EXE) + "\"", tempDir() / "readelf.txt");
+  ASSERT_EQ(r.status, 0) << r.out;
+  ASSERT_NE(r.out.find("(NEEDED)"), std::string::npos) << r.out;  // the listing was read
+  for (const char* lib : {"libOSMesa", "libGL", "libLLVM", "libopencsg", "libGLEW"})
+    EXPECT_EQ(r.out.find(lib), std::string::npos) << lib << " is linked into qacc:\n" << r.out;
+}
+
+// The module beside the executable draws; without it, the facets engine says what is missing.
+TEST(FacetsModule, LoadedFromTheExecutablesDirectoryOrAClearError) {
+  if (!qacc::facetRendererAvailable()) GTEST_SKIP() << "built without OSMesa";
+  const fs::path dir = tempDir();
+  const std::string scene = std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json";
+  const std::string args = " render \"" + scene + "\" --engine facets --width 64 --height 48 -o \"";
+  const ShellRun ok = shell("\"" + std::string(QACC_EXE) + "\"" + args + (dir / "with.png").string() + "\"", dir / "ok.txt");
+  EXPECT_EQ(ok.status, 0) << ok.out;
+  EXPECT_TRUE(fs::exists(dir / "with.png"));
+
+  const fs::path lone = dir / "lone";
+  fs::create_directories(lone);
+  fs::copy_file(QACC_EXE, lone / "qacc", fs::copy_options::overwrite_existing);
+  const ShellRun missing =
+      shell("\"" + (lone / "qacc").string() + "\"" + args + (dir / "without.png").string() + "\"", dir / "missing.txt");
+  EXPECT_EQ(missing.status, 1) << missing.out;
+  EXPECT_NE(missing.out.find("qacc: error: facets: cannot load the facets engine's module"), std::string::npos)
+      << missing.out;
+  EXPECT_NE(missing.out.find("libqacc_facets.so"), std::string::npos) << missing.out;
+  EXPECT_FALSE(fs::exists(dir / "without.png"));
+  // Every other engine runs from the lone executable.
+  const ShellRun hw = shell("\"" + (lone / "qacc").string() + "\" render \"" + scene +
+                           "\" --engine hw --no-accuracy --width 64 --height 48 -o \"" + (dir / "hw.png").string() + "\"",
+                       dir / "hw.txt");
+  EXPECT_EQ(hw.status, 0) << hw.out;
+  fs::remove_all(dir);
+}

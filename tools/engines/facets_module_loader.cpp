@@ -1,0 +1,48 @@
+// renderFacets in the qacc executable: the facet renderer lives in the facets module,
+// libqacc_facets.so beside the executable (raster/osmesa/facets_module.h), loaded the first
+// time the facets engine draws, so that every other command runs without Mesa in memory.
+// The test executables link the renderer itself (the qacc_osmesa library) instead of this.
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <climits>
+#include <stdexcept>
+#include <string>
+
+#include "raster/osmesa/facets_module.h"
+
+namespace qacc {
+namespace {
+
+using RenderFn = void (*)(const Scene&, const TriangleMesh3&, const FacetRenderOptions&, FacetRenderResult&);
+
+std::string modulePath() {
+  char buf[PATH_MAX];
+  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n <= 0) throw std::runtime_error("facets: cannot find the qacc executable's directory (/proc/self/exe)");
+  std::string exe(buf, std::size_t(n));
+  return exe.substr(0, exe.rfind('/') + 1) + "libqacc_facets.so";
+}
+
+RenderFn loadRenderer() {
+  const std::string path = modulePath();
+  // RTLD_NOW: a symbol the module needs and the executable lacks is reported here, by name.
+  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle)
+    throw std::runtime_error(std::string("facets: cannot load the facets engine's module: ") + dlerror() +
+                             " (it is built beside qacc as libqacc_facets.so; keep the two together)");
+  void* fn = dlsym(handle, "qacc_facets_render_v1");
+  if (!fn) throw std::runtime_error("facets: " + path + " has no qacc_facets_render_v1: " + dlerror());
+  return reinterpret_cast<RenderFn>(fn);
+}
+
+}  // namespace
+
+FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, const FacetRenderOptions& options) {
+  static const RenderFn render = loadRenderer();  // once; a failed load is retried and reported again
+  FacetRenderResult out;
+  render(scene, mesh, options, out);
+  return out;
+}
+
+}  // namespace qacc
