@@ -6,3 +6,5 @@ extern "C" __attribute__((visibility("default"))) void qacc_facets_render_v1(con
                                                                             qacc::FacetRenderResult& out) {
   out = qacc::renderFacets(scene, mesh, options);
 }
+
+extern "C" __attribute__((visibility("default"))) const std::size_t* qacc_facets_abi() { return qacc::kFacetsModuleAbi; }

@@ -12,6 +12,23 @@
 
 #include "raster/osmesa/osmesa_renderer.h"
 
+#include <cstddef>
+
+namespace qacc {
+// What the two sides must agree on to pass these types by reference: their sizes and
+// alignments, compiled into each side from this header. The loader refuses a module whose
+// fingerprint differs (a module left from another build); a changed signature already
+// fails in dlopen, by its mangled name.
+constexpr std::size_t kFacetsModuleAbi[] = {
+    sizeof(Scene),        alignof(Scene),        sizeof(TriangleMesh3),      alignof(TriangleMesh3),
+    sizeof(FacetRenderOptions), alignof(FacetRenderOptions), sizeof(FacetRenderResult), alignof(FacetRenderResult),
+    sizeof(FrameBuffer),  sizeof(Camera)};
+constexpr std::size_t kFacetsModuleAbiSize = sizeof(kFacetsModuleAbi) / sizeof(kFacetsModuleAbi[0]);
+}  // namespace qacc
+
+// The module's copy of kFacetsModuleAbi (kFacetsModuleAbiSize values).
+extern "C" const std::size_t* qacc_facets_abi();
+
 // Renders as renderFacets does; an exception thrown inside reaches the caller.
 extern "C" void qacc_facets_render_v1(const qacc::Scene& scene, const qacc::TriangleMesh3& mesh,
                                       const qacc::FacetRenderOptions& options, qacc::FacetRenderResult& out);

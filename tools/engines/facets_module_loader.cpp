@@ -5,6 +5,7 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <climits>
 #include <stdexcept>
 #include <string>
@@ -14,12 +15,13 @@
 namespace qacc {
 namespace {
 
-using RenderFn = void (*)(const Scene&, const TriangleMesh3&, const FacetRenderOptions&, FacetRenderResult&);
+using RenderFn = decltype(&qacc_facets_render_v1);
+using AbiFn = decltype(&qacc_facets_abi);
 
 std::string modulePath() {
   char buf[PATH_MAX];
-  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
-  if (n <= 0) throw std::runtime_error("facets: cannot find the qacc executable's directory (/proc/self/exe)");
+  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf);
+  if (n <= 0 || n == ssize_t(sizeof buf)) throw std::runtime_error("facets: cannot find the qacc executable's directory (/proc/self/exe)");
   std::string exe(buf, std::size_t(n));
   return exe.substr(0, exe.rfind('/') + 1) + "libqacc_facets.so";
 }
@@ -32,7 +34,18 @@ RenderFn loadRenderer() {
     throw std::runtime_error(std::string("facets: cannot load the facets engine's module: ") + dlerror() +
                              " (it is built beside qacc as libqacc_facets.so; keep the two together)");
   void* fn = dlsym(handle, "qacc_facets_render_v1");
-  if (!fn) throw std::runtime_error("facets: " + path + " has no qacc_facets_render_v1: " + dlerror());
+  void* abi = dlsym(handle, "qacc_facets_abi");
+  if (!fn || !abi) {
+    const std::string why = dlerror();
+    dlclose(handle);
+    throw std::runtime_error("facets: " + path + " is not this qacc's facets module: " + why);
+  }
+  const std::size_t* theirs = reinterpret_cast<AbiFn>(abi)();
+  if (!std::equal(kFacetsModuleAbi, kFacetsModuleAbi + kFacetsModuleAbiSize, theirs)) {
+    dlclose(handle);
+    throw std::runtime_error("facets: " + path +
+                             " was built from other sources than this qacc (its types' layouts differ): rebuild both");
+  }
   return reinterpret_cast<RenderFn>(fn);
 }
 
