@@ -431,6 +431,8 @@ void drawScene(std::size_t count, const FacetCsgDrawPtr& csg, const ShaderApi& a
 
 }  // namespace
 
+void prepareFacetRenderer() {}
+
 FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, const FacetRenderOptions& options) {
   const auto tSetup = Clock::now();
   const int W = scene.width, H = scene.height;

@@ -73,6 +73,12 @@ inline const char* facetRendererMissingMessage() {
          "and reconfigure with -DQACC_WITH_OSMESA=ON)";
 }
 
+// Makes sure the facet renderer can draw before any work is spent on it: a no-op where the
+// renderer is linked in (the tests); in the qacc executable it loads the facets module and
+// throws std::runtime_error, naming the module, when that fails
+// (tools/engines/facets_module_loader.cpp).
+void prepareFacetRenderer();
+
 // Renders `mesh` (from tessellateScene) with the scene's camera, lights, materials and image
 // size. Throws std::runtime_error when OSMesa cannot create a context.
 FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, const FacetRenderOptions& options);

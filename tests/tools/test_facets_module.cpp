@@ -72,6 +72,13 @@ TEST(FacetsModule, LoadedFromTheExecutablesDirectoryOrAClearError) {
       << missing.out;
   EXPECT_NE(missing.out.find("libqacc_facets.so"), std::string::npos) << missing.out;
   EXPECT_FALSE(fs::exists(dir / "without.png"));
+  // compare draws the facets last: the missing module is reported before anything is rendered.
+  const ShellRun cmp = shell("\"" + (lone / "qacc").string() + "\" compare \"" + scene + "\" --width 64 --height 48 --out \"" +
+                                 (dir / "cmp").string() + "\"",
+                             dir / "cmp.txt");
+  EXPECT_EQ(cmp.status, 1) << cmp.out;
+  EXPECT_NE(cmp.out.find("libqacc_facets.so"), std::string::npos) << cmp.out;
+  EXPECT_EQ(cmp.out.find("hw-cycle"), std::string::npos) << "rendered before the module was loaded:\n" << cmp.out;
   // Every other engine runs from the lone executable.
   const ShellRun hw = shell("\"" + (lone / "qacc").string() + "\" render \"" + scene +
                            "\" --engine hw --no-accuracy --width 64 --height 48 -o \"" + (dir / "hw.png").string() + "\"",

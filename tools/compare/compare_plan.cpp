@@ -89,6 +89,9 @@ ComparePlan planCompare(const CompareOptions& o) {
   }
   p.shading = parseFacetShading(o.shading);
   if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
+#ifdef QACC_HAVE_OSMESA
+  prepareFacetRenderer();  // before any rendering: a missing facets module is reported first
+#endif
   p.cfg = o.config_path.empty() ? HwConfig() : loadHwConfig(o.config_path);
   std::filesystem::create_directories(o.out_dir);
   return p;

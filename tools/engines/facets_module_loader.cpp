@@ -51,10 +51,16 @@ RenderFn loadRenderer() {
 
 }  // namespace
 
-FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, const FacetRenderOptions& options) {
+static RenderFn renderer() {
   static const RenderFn render = loadRenderer();  // once; a failed load is retried and reported again
+  return render;
+}
+
+void prepareFacetRenderer() { renderer(); }
+
+FacetRenderResult renderFacets(const Scene& scene, const TriangleMesh3& mesh, const FacetRenderOptions& options) {
   FacetRenderResult out;
-  render(scene, mesh, options, out);
+  renderer()(scene, mesh, options, out);
   return out;
 }
 
