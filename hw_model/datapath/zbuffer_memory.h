@@ -64,24 +64,22 @@ struct ZBufferMemory {
     return true;
   }
   // The value stored for an internal depth: its top zbuffer_bits fraction bits, clamped.
-  static std::uint32_t storedValue(i128 depth, const HwConfig& cfg) {
-    const i128 v = depth >> (cfg.depth_frac_bits - cfg.zbuffer_bits);
-    const i128 top = (i128(1) << cfg.zbuffer_bits) - 1;
-    return std::uint32_t(v < 0 ? 0 : (v > top ? top : v));
-  }
-  // storedValue for a depth held in 64 bits (every depth the pixel datapath hands on:
-  // |z| < 2^40, depth_bits <= 40), the format's shift and top computed once per frame.
+  // StoredFormat holds the format's shift and top, so that a unit testing every pixel
+  // (timing/zbuffer_unit.h) computes them once per frame; depths come as i128 or, where the
+  // pixel datapath's bound |z| < 2^40 (depth_bits <= 40) holds, as 64-bit values.
   struct StoredFormat {
     int shift = 0;         // depth_frac_bits - zbuffer_bits (0 to 28)
     std::int64_t top = 0;  // 2^zbuffer_bits - 1
     static StoredFormat from(const HwConfig& cfg) {
       return {cfg.depth_frac_bits - cfg.zbuffer_bits, (std::int64_t(1) << cfg.zbuffer_bits) - 1};
     }
-    std::uint32_t operator()(std::int64_t depth) const {
-      const std::int64_t v = depth >> shift;
-      return std::uint32_t(v < 0 ? 0 : (v > top ? top : v));
+    template <typename I>
+    std::uint32_t operator()(I depth) const {
+      const I v = depth >> shift;
+      return std::uint32_t(v < 0 ? 0 : (v > I(top) ? I(top) : v));
     }
   };
+  static std::uint32_t storedValue(i128 depth, const HwConfig& cfg) { return StoredFormat::from(cfg)(depth); }
   static int bankOf(int x, int y, int banks) { return interleavedUnit(x, y, banks); }
 };
 
