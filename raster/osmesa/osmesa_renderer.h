@@ -16,6 +16,7 @@
 // The file osmesa_renderer.cpp is built only with OSMesa (CMake QACC_WITH_OSMESA, which
 // defines QACC_HAVE_OSMESA); test facetRendererAvailable() before calling renderFacets.
 #pragma once
+#include <stdexcept>
 #include <string>
 
 #include "modeling/scene/scene.h"
@@ -78,6 +79,15 @@ inline const char* facetRendererMissingMessage() {
 // throws std::runtime_error, naming the module, when that fails
 // (tools/engines/facets_module_loader.cpp).
 void prepareFacetRenderer();
+
+// What every user of the facet renderer checks first: std::invalid_argument when the build
+// has none, std::runtime_error when its module cannot be loaded.
+inline void requireFacetRenderer() {
+  if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
+#ifdef QACC_HAVE_OSMESA
+  prepareFacetRenderer();
+#endif
+}
 
 // Renders `mesh` (from tessellateScene) with the scene's camera, lights, materials and image
 // size. Throws std::runtime_error when OSMesa cannot create a context.

@@ -88,10 +88,7 @@ ComparePlan planCompare(const CompareOptions& o) {
     p.sizes = parseSizes(o.sizes);
   }
   p.shading = parseFacetShading(o.shading);
-  if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
-#ifdef QACC_HAVE_OSMESA
-  prepareFacetRenderer();  // before any rendering: a missing facets module is reported first
-#endif
+  requireFacetRenderer();  // before any rendering: a missing facets module is reported first
   p.cfg = o.config_path.empty() ? HwConfig() : loadHwConfig(o.config_path);
   std::filesystem::create_directories(o.out_dir);
   return p;

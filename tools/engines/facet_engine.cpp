@@ -35,10 +35,7 @@ FacetRun renderFacetScene(const Scene& scene, int level, FacetShading shading, i
 
 FacetRun renderFacetScene(const Scene& scene, const TessellationOptions& to, FacetShading shading, int threads,
                           std::size_t max_triangles, TriangleMesh3* meshOut) {
-  if (!facetRendererAvailable()) throw std::invalid_argument(facetRendererMissingMessage());
-#ifdef QACC_HAVE_OSMESA
-  prepareFacetRenderer();  // before tessellating: a missing facets module is reported first
-#endif
+  requireFacetRenderer();  // before tessellating: a missing facets module is reported first
   FacetRun run;
   const auto t0 = std::chrono::steady_clock::now();
   TessellationOptions bounded = to;

@@ -21,7 +21,8 @@ using AbiFn = decltype(&qacc_facets_abi);
 std::string modulePath() {
   char buf[PATH_MAX];
   const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf);
-  if (n <= 0 || n == ssize_t(sizeof buf)) throw std::runtime_error("facets: cannot find the qacc executable's directory (/proc/self/exe)");
+  if (n <= 0 || n == ssize_t(sizeof buf))
+    throw std::runtime_error("facets: cannot find the qacc executable's directory (/proc/self/exe)");
   std::string exe(buf, std::size_t(n));
   return exe.substr(0, exe.rfind('/') + 1) + "libqacc_facets.so";
 }
@@ -49,12 +50,12 @@ RenderFn loadRenderer() {
   return reinterpret_cast<RenderFn>(fn);
 }
 
-}  // namespace
-
-static RenderFn renderer() {
+RenderFn renderer() {
   static const RenderFn render = loadRenderer();  // once; a failed load is retried and reported again
   return render;
 }
+
+}  // namespace
 
 void prepareFacetRenderer() { renderer(); }
 
