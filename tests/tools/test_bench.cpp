@@ -49,6 +49,9 @@ TEST(BenchCommand, JsonHasEveryFieldPerSceneAndThreadCount) {
     for (const char* k : {"ref_ms", "hw_ms", "hw_cycle_ms", "loop_cycles_per_second", "tested_pixels_per_second"})
       EXPECT_GT(r.at(k).get<double>(), 0.0) << k;
     EXPECT_GT(r.at("cycles").get<std::uint64_t>(), 0u);
+    // Each engine's best frame carries the page faults taken during it (a count, maybe 0).
+    for (const char* k : {"ref_page_faults", "hw_page_faults", "hw_cycle_page_faults"})
+      EXPECT_GE(r.at(k).get<long>(), 0) << k;
   }
   // The same frame on one and two threads: the same cycle count.
   EXPECT_EQ(doc["runs"][0]["cycles"], doc["runs"][1]["cycles"]);

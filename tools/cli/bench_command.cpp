@@ -3,7 +3,8 @@
 // Accelerator benchmark (issues 3 and 16): per scene (default: molecule and sphereflake at
 // 1920x1080) and per thread count (default: 1 and all cores), the reference, `hw` and
 // `hw-cycle` wall time per frame (best of --repeat, the engines alternating so that they
-// see the same machine load), the `hw` tested pixels per second (per thread too), the
+// see the same machine load; a frame ends when the engine returns, its result freed after
+// the clock stops) with the page faults of that best frame, the `hw` tested pixels per second (per thread too), the
 // `hw-cycle` simulated cycles, the wall time of its pixel datapath pass (pixel_trace.h),
 // the simulation rate of the timing loop alone (simulated cycles per wall second, one
 // core), the slowdown of the whole `hw-cycle` frame against the modeled clock, and the
@@ -24,6 +25,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <sys/resource.h>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -70,6 +72,8 @@ struct BenchRun {
   double refMs = 1e300, hwMs = 1e300, cycleMs = 1e300;
   std::uint64_t tested = 0, cycles = 0;
   double loopS = 0, traceS = 0, frameMs = 0;
+  double lastLoopS = 0, lastTraceS = 0;  // of the latest hw-cycle frame
+  long refFaults = 0, hwFaults = 0, cycleFaults = 0;  // minor page faults of each engine's best frame
   double testedPerSecond() const { return double(tested) / (hwMs * 1e-3); }
   double loopRate() const { return loopS > 0 ? double(cycles) / loopS : 0.0; }
 };
@@ -100,30 +104,57 @@ std::string withFieldOfView(const std::string& text, const std::string& path, do
   return doc.dump();
 }
 
+// One timed frame: the engine's wall time and the minor page faults of the whole process
+// during it (frame-sized buffers first touched), the result kept alive until the clock has
+// stopped, so that no engine's time includes freeing its own frame.
+struct FrameTiming {
+  double ms = 0;
+  long faults = 0;
+};
+long minorFaults() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_minflt;
+}
+template <typename Render, typename Keep>
+FrameTiming timeFrame(Render&& render, Keep&& keep) {
+  const long f0 = minorFaults();
+  const auto t0 = std::chrono::steady_clock::now();
+  auto result = render();
+  FrameTiming t{wallMs(t0), minorFaults() - f0};
+  keep(result);
+  return t;
+}
+
 BenchRun benchOne(const Scene& scene, const HwConfig& cfg, int threads, int repeat, bool cycle) {
   BenchRun b;
   b.scene = scene.name;
   b.primitives = scene.primitives.size();
   b.threads = threads;
-  for (int i = 0; i < repeat; ++i) {
-    auto t0 = std::chrono::steady_clock::now();
-    renderReference(scene, threads);
-    b.refMs = std::min(b.refMs, wallMs(t0));
-    t0 = std::chrono::steady_clock::now();
-    const HwRender hw = renderHw(scene, cfg, threads);
-    b.hwMs = std::min(b.hwMs, wallMs(t0));
-    b.tested = hw.stats.pixels.tested;
-    if (!cycle) continue;
-    t0 = std::chrono::steady_clock::now();
-    const HwRender r = renderHwCycle(scene, cfg, threads);
-    const double ms = wallMs(t0);
-    if (ms < b.cycleMs) {
-      b.cycleMs = ms;
-      b.loopS = r.stats.loop_seconds;
-      b.traceS = r.stats.trace_seconds;
+  const auto best = [](const FrameTiming& t, double& ms, long& faults) {
+    if (t.ms < ms) {
+      ms = t.ms;
+      faults = t.faults;
     }
-    b.cycles = r.stats.cycles;
-    b.frameMs = r.stats.frameSeconds() * 1e3;
+  };
+  for (int i = 0; i < repeat; ++i) {
+    best(timeFrame([&] { return renderReference(scene, threads); }, [](const auto&) {}), b.refMs, b.refFaults);
+    best(timeFrame([&] { return renderHw(scene, cfg, threads); },
+                   [&](const HwRender& hw) { b.tested = hw.stats.pixels.tested; }),
+         b.hwMs, b.hwFaults);
+    if (!cycle) continue;
+    const FrameTiming t = timeFrame([&] { return renderHwCycle(scene, cfg, threads); },
+                                    [&](const HwRender& r) {
+                                      b.cycles = r.stats.cycles;
+                                      b.frameMs = r.stats.frameSeconds() * 1e3;
+                                      b.lastLoopS = r.stats.loop_seconds;
+                                      b.lastTraceS = r.stats.trace_seconds;
+                                    });
+    if (t.ms < b.cycleMs) {
+      b.loopS = b.lastLoopS;
+      b.traceS = b.lastTraceS;
+    }
+    best(t, b.cycleMs, b.cycleFaults);
   }
   if (!cycle) b.cycleMs = 0;
   return b;
@@ -138,6 +169,9 @@ nlohmann::json toJson(const BenchRun& b) {
           {"ref_ms", b.refMs},
           {"hw_ms", b.hwMs},
           {"hw_cycle_ms", b.cycleMs},
+          {"ref_page_faults", b.refFaults},
+          {"hw_page_faults", b.hwFaults},
+          {"hw_cycle_page_faults", b.cycleFaults},
           {"cycles", b.cycles},
           {"loop_seconds", b.loopS},
           {"trace_seconds", b.traceS},
@@ -162,9 +196,9 @@ void runBench(const BenchArgs& a) {
   std::printf("config %s, %d MHz, P=%d, %.0f kGE (cost model), %dx%d, best of %d; %s, %d cores, load %.2f\n",
               cfg.name.c_str(), int(cfg.clock_mhz), cfg.pipelines, CostModel::of(cfg).totalGe() / 1e3, a.width,
               a.height, a.repeat, cpuModel().c_str(), cores, load0);
-  std::printf("%-14s %-6s %9s %7s %3s %9s %9s %7s %12s %10s %11s %9s %11s %9s %9s\n", "scene", "view", "build ms",
-              "prims", "thr", "ref ms", "hw ms", "ref/hw", "tested px/s", "cycle ms", "cycles", "trace ms",
-              "loop cyc/s", "slowdown", "frame ms");
+  std::printf("%-14s %-6s %9s %7s %3s %9s %9s %7s %12s %10s %11s %9s %11s %9s %9s  %s\n", "scene", "view",
+              "build ms", "prims", "thr", "ref ms", "hw ms", "ref/hw", "tested px/s", "cycle ms", "cycles", "trace ms",
+              "loop cyc/s", "slowdown", "frame ms", "faults ref/hw/cycle");
   std::vector<BenchRun> runs;
   std::vector<double> fovs = {0};  // 0: the scene's own camera
   if (a.zoomed_fov > 0) fovs.push_back(a.zoomed_fov);
@@ -180,10 +214,11 @@ void runBench(const BenchArgs& a) {
         BenchRun b = benchOne(scene, cfg, t, a.repeat, a.cycle);
         b.view = fov > 0 ? "zoomed" : "full";
         b.buildMs = buildMs;
-        std::printf("%-14s %-6s %9.1f %7zu %3d %9.1f %9.1f %7.2f %12.3g %10.1f %11llu %9.1f %11.3g %9.2f %9.3f\n",
+        std::printf("%-14s %-6s %9.1f %7zu %3d %9.1f %9.1f %7.2f %12.3g %10.1f %11llu %9.1f %11.3g %9.2f %9.3f  %ld/%ld/%ld\n",
                     b.scene.c_str(), b.view.c_str(), b.buildMs, b.primitives, b.threads, b.refMs, b.hwMs,
                     b.refMs / b.hwMs, b.testedPerSecond(), b.cycleMs, (unsigned long long)b.cycles, b.traceS * 1e3,
-                    b.loopRate(), b.frameMs > 0 ? b.cycleMs / b.frameMs : 0.0, b.frameMs);
+                    b.loopRate(), b.frameMs > 0 ? b.cycleMs / b.frameMs : 0.0, b.frameMs, b.refFaults, b.hwFaults,
+                    b.cycleFaults);
         std::fflush(stdout);
         runs.push_back(b);
       }
