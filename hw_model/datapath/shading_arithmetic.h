@@ -17,6 +17,7 @@
 
 #include "hw_model/config/hw_config.h"
 #include "hw_model/datapath/primitive_setup.h"
+#include "hw_model/datapath/zbuffer_memory.h"
 #include "modeling/scene/scene.h"
 
 namespace qacc {
@@ -69,6 +70,12 @@ struct LightingSetup {
 // plane or -1) in 8-bit sRGB. L must have been built with the same cfg.
 std::array<std::uint8_t, 3> shadePixel(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
                                        i128 z, int cap, OverflowCounter& ovf);
+// The n winners of one primitive at (u, v), (u + 1, v), ... of a row (each record's depth
+// and cap): rgb[i] is shadePixel(s, L, cfg, u + i, v, winners[i].depth, winners[i].cap, ovf),
+// bit for bit, the shading fields' affine parts advanced along the row by forward
+// differences, as a shading unit fed a span would (shading_datapath64.cpp).
+void shadeSpan(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v, int n,
+               const ZEntry* winners, std::array<std::uint8_t, 3>* rgb, OverflowCounter& ovf);
 // The reference: the same datapath with 128-bit registers throughout, computed as specified
 // (shadePixel uses 64-bit registers and the regrouped constants where the widths allow,
 // shading_datapath64.h; the two must agree bit for bit).

@@ -1,6 +1,7 @@
 #include "hw_model/datapath/shading_datapath64.h"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "hw_model/datapath/shading_field.h"
 #include "hw_model/datapath/vector_normalizer64.h"
@@ -16,23 +17,45 @@ inline Reg dot(const Reg a[3], const Reg b[3], int uf) {
   return shiftRoundFitR<R, Reg>(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf);
 }
 
-// Inlined into shadePixel's one dispatch (by rounding, normaliser and coefficient width):
-// no call per level, and the colour bytes leave in one register.
+// The affine part of a shading field's component k at (u, v), uv(u, v) << Fz, as the bits of a
+// 128-bit register (evalShadingField adds cz · z to it): along a row it advances by
+// A << Fz a pixel, the same bits modulo 2^128.
+template <bool Narrow>
+inline unsigned __int128 fieldRowPart(const VectorSetup& f, int k, int u, int v, int Fz) {
+  const LinearCoefficients& c = f.uv[k];
+  i128 uv;
+  if constexpr (Narrow) {
+    auto mul64 = [](i128 a, i128 b) { return i128(std::int64_t(a)) * i128(std::int64_t(b)); };
+    uv = mul64(c.A, u) + mul64(c.B, v) + c.C;
+  } else {
+    uv = c.A * u + c.B * v + c.C;
+  }
+  return (unsigned __int128)uv << Fz;
+}
+template <bool Narrow>
+inline i128 fieldDepthPart(const VectorSetup& f, int k, i128 z) {
+  if constexpr (Narrow) return i128(std::int64_t(f.cz[k])) * i128(std::int64_t(z));
+  return f.cz[k] * z;
+}
+
+// The shading of one pixel from its normal and view fields (raw, exact; the normal is
+// unused on a cap): inlined into shadePixel's and shadeSpan's one dispatch (by rounding,
+// normaliser and coefficient width), no call per level, the colour bytes in one register.
 template <Rounding R, Normalizer Z, bool Narrow>
-[[gnu::always_inline]] inline std::array<std::uint8_t, 3> shade64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
-                                    i128 z, int cap) {
+[[gnu::always_inline]] inline std::array<std::uint8_t, 3> shadeFields(const PrimitiveSetup& s, const LightingSetup& L,
+                                                                      const HwConfig& cfg, int u, int v, i128 z,
+                                                                      int cap, const i128 rawN[3], const i128 rawV[3]) {
   const VectorNormalizer64<R, Z> unit(cfg);
   const int Fz = cfg.depth_frac_bits, uf = cfg.unit_frac_bits, cf = cfg.color_frac_bits;
-  i128 raw[3];
   Reg N[3], V[3];
   if (cap >= 0) {
-    for (int k = 0; k < 3; ++k) raw[k] = s.planes[std::size_t(cap)].capNormal[k];
+    i128 capN[3];
+    for (int k = 0; k < 3; ++k) capN[k] = s.planes[std::size_t(cap)].capNormal[k];
+    unit.normalize(capN, N);
   } else {
-    for (int k = 0; k < 3; ++k) raw[k] = evalShadingField<Narrow>(s.normal, k, u, v, z, Fz);
+    unit.normalize(rawN, N);
   }
-  unit.normalize(raw, N);
-  for (int k = 0; k < 3; ++k) raw[k] = evalShadingField<Narrow>(s.view, k, u, v, z, Fz);
-  unit.normalize(raw, V);
+  unit.normalize(rawV, V);
   if (dot<R>(N, V, uf) < 0)
     for (int k = 0; k < 3; ++k) N[k] = -N[k];  // two-sided
   const int mi = s.material >= 0 && s.material < int(L.materials64.size()) ? s.material : 0;
@@ -53,6 +76,7 @@ template <Rounding R, Normalizer Z, bool Narrow>
   };
   for (const LightingSetup::Directional64& d : L.directional64) light(d.dir, d.color);
   for (const LightingSetup::Point64& p : L.points64) {
+    i128 raw[3];
     for (int k = 0; k < 3; ++k) raw[k] = evalShadingField<Narrow>(s.pointLights[std::size_t(p.point)], k, u, v, z, Fz);
     Reg Lv[3];
     unit.normalize(raw, Lv);
@@ -64,33 +88,101 @@ template <Rounding R, Normalizer Z, bool Narrow>
   return rgb;
 }
 
+template <Rounding R, Normalizer Z, bool Narrow>
+[[gnu::always_inline]] inline std::array<std::uint8_t, 3> shade64(const PrimitiveSetup& s, const LightingSetup& L,
+                                                                  const HwConfig& cfg, int u, int v, i128 z, int cap) {
+  const int Fz = cfg.depth_frac_bits;
+  i128 rawN[3], rawV[3];
+  for (int k = 0; k < 3; ++k) {
+    rawN[k] = cap >= 0 ? 0 : evalShadingField<Narrow>(s.normal, k, u, v, z, Fz);
+    rawV[k] = evalShadingField<Narrow>(s.view, k, u, v, z, Fz);
+  }
+  return shadeFields<R, Z, Narrow>(s, L, cfg, u, v, z, cap, rawN, rawV);
+}
+
+// The n winners of a row: the normal and view fields' affine parts advance by forward
+// differences (the same bits as evalShadingField at each pixel: see fieldRowPart).
+template <Rounding R, Normalizer Z, bool Narrow>
+void shadeSpan64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v, int n,
+                 const ZEntry* winners, std::array<std::uint8_t, 3>* rgb) {
+  using U = unsigned __int128;
+  const int Fz = cfg.depth_frac_bits;
+  U rowN[3], rowV[3], stepN[3], stepV[3];
+  for (int k = 0; k < 3; ++k) {
+    rowN[k] = fieldRowPart<Narrow>(s.normal, k, u, v, Fz);
+    rowV[k] = fieldRowPart<Narrow>(s.view, k, u, v, Fz);
+    stepN[k] = U(s.normal.uv[k].A) << Fz;
+    stepV[k] = U(s.view.uv[k].A) << Fz;
+  }
+  for (int i = 0; i < n; ++i) {
+    const i128 z = winners[i].depth;
+    const int cap = int(winners[i].cap);
+    i128 rawN[3], rawV[3];
+    for (int k = 0; k < 3; ++k) {
+      rawN[k] = i128(rowN[k] + U(fieldDepthPart<Narrow>(s.normal, k, z)));
+      rawV[k] = i128(rowV[k] + U(fieldDepthPart<Narrow>(s.view, k, z)));
+      rowN[k] += stepN[k];
+      rowV[k] += stepV[k];
+    }
+    rgb[i] = shadeFields<R, Z, Narrow>(s, L, cfg, u + i, v, z, cap, rawN, rawV);
+  }
+}
+
+// The instantiation of the configuration: one switch by rounding, normaliser and
+// coefficient width, F called with the three as template constants.
+template <typename F>
+[[gnu::always_inline]] inline auto dispatch64(const HwConfig& cfg, F&& f) {
+  constexpr Rounding T = Rounding::Truncate, N = Rounding::Nearest, E = Rounding::NearestEven;
+  constexpr Normalizer Nw = Normalizer::Newton, Rc = Normalizer::Recurrence;
+  using std::integral_constant;
+  const bool narrow = cfg.value_bits + cfg.interp_frac_bits + 2 <= 64;
+  const int r = cfg.rounding == T ? 0 : cfg.rounding == N ? 1 : 2;
+  const int key = r * 4 + (cfg.shading_normalizer == Nw ? 0 : 2) + (narrow ? 0 : 1);
+  using RT = integral_constant<Rounding, T>;
+  using RN = integral_constant<Rounding, N>;
+  using RE = integral_constant<Rounding, E>;
+  using ZN = integral_constant<Normalizer, Nw>;
+  using ZR = integral_constant<Normalizer, Rc>;
+  using W1 = std::true_type;
+  using W0 = std::false_type;
+  switch (key) {
+    case 0: return f(RT{}, ZN{}, W1{});
+    case 1: return f(RT{}, ZN{}, W0{});
+    case 2: return f(RT{}, ZR{}, W1{});
+    case 3: return f(RT{}, ZR{}, W0{});
+    case 4: return f(RN{}, ZN{}, W1{});
+    case 5: return f(RN{}, ZN{}, W0{});
+    case 6: return f(RN{}, ZR{}, W1{});
+    case 7: return f(RN{}, ZR{}, W0{});
+    case 8: return f(RE{}, ZN{}, W1{});
+    case 9: return f(RE{}, ZN{}, W0{});
+    case 10: return f(RE{}, ZR{}, W1{});
+    default: return f(RE{}, ZR{}, W0{});
+  }
+}
+
 }  // namespace
 
-// shadePixel (shading_arithmetic.h) lives here, beside the datapath it dispatches to: one
-// call a pixel, the instantiation picked by one switch.
+// shadePixel and shadeSpan (shading_arithmetic.h) live here, beside the datapath they
+// dispatch to: one switch a call.
 std::array<std::uint8_t, 3> shadePixel(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
                                        i128 z, int cap, OverflowCounter& ovf) {
   (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
   if (!shadingDatapath64Applies(cfg)) return shadePixelWide(s, L, cfg, u, v, z, cap);
-  constexpr Rounding T = Rounding::Truncate, N = Rounding::Nearest, E = Rounding::NearestEven;
-  constexpr Normalizer Nw = Normalizer::Newton, Rc = Normalizer::Recurrence;
-  const bool narrow = cfg.value_bits + cfg.interp_frac_bits + 2 <= 64;
-  const int r = cfg.rounding == T ? 0 : cfg.rounding == N ? 1 : 2;
-  const int key = r * 4 + (cfg.shading_normalizer == Nw ? 0 : 2) + (narrow ? 0 : 1);
-  switch (key) {
-    case 0: return shade64<T, Nw, true>(s, L, cfg, u, v, z, cap);
-    case 1: return shade64<T, Nw, false>(s, L, cfg, u, v, z, cap);
-    case 2: return shade64<T, Rc, true>(s, L, cfg, u, v, z, cap);
-    case 3: return shade64<T, Rc, false>(s, L, cfg, u, v, z, cap);
-    case 4: return shade64<N, Nw, true>(s, L, cfg, u, v, z, cap);
-    case 5: return shade64<N, Nw, false>(s, L, cfg, u, v, z, cap);
-    case 6: return shade64<N, Rc, true>(s, L, cfg, u, v, z, cap);
-    case 7: return shade64<N, Rc, false>(s, L, cfg, u, v, z, cap);
-    case 8: return shade64<E, Nw, true>(s, L, cfg, u, v, z, cap);
-    case 9: return shade64<E, Nw, false>(s, L, cfg, u, v, z, cap);
-    case 10: return shade64<E, Rc, true>(s, L, cfg, u, v, z, cap);
-    default: return shade64<E, Rc, false>(s, L, cfg, u, v, z, cap);
+  return dispatch64(cfg, [&](auto r, auto n, auto w) {
+    return shade64<decltype(r)::value, decltype(n)::value, decltype(w)::value>(s, L, cfg, u, v, z, cap);
+  });
+}
+
+void shadeSpan(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v, int n,
+               const ZEntry* winners, std::array<std::uint8_t, 3>* rgb, OverflowCounter& ovf) {
+  if (!shadingDatapath64Applies(cfg)) {
+    for (int i = 0; i < n; ++i) rgb[i] = shadePixel(s, L, cfg, u + i, v, winners[i].depth, int(winners[i].cap), ovf);
+    return;
   }
+  dispatch64(cfg, [&](auto r, auto z, auto w) {
+    shadeSpan64<decltype(r)::value, decltype(z)::value, decltype(w)::value>(s, L, cfg, u, v, n, winners, rgb);
+  });
 }
 
 }  // namespace qacc

@@ -12,9 +12,11 @@
 
 namespace qacc {
 
-// Shades one winner into pixel (x, y) of the frame buffer.
-void resolvePixel(const HwConfig& cfg, const FrameSetup& fs, int x, int y, const ZEntry& e, FrameBuffer& fb,
-                  OverflowCounter& ovf);
+// Shades the winners of pixels [x0, x1) of row y (row[i] is pixel x0 + i's record) into the
+// frame buffer, each run of one primitive as a span (shadeSpan); returns the pixels written
+// (those with a winner).
+std::uint64_t resolveRow(const HwConfig& cfg, const FrameSetup& fs, int x0, int x1, int y, const ZEntry* row,
+                         FrameBuffer& fb, OverflowCounter& ovf);
 
 // Shades every winner of a frame-sized Z-buffer; counts the distinct pixels written.
 FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs, const ZBufferMemory& zb,

@@ -153,12 +153,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
         if (looked) hizSeen[std::size_t(k)].fetch_or(std::uint8_t(1 | (accepted ? 2 : 0)), std::memory_order_relaxed);
       }
       for (int y = ty0; y < ty1; ++y)
-        for (int x = tx0; x < tx1; ++x) {
-          const std::size_t pix = std::size_t(y - ty0) * kTile + std::size_t(x - tx0);
-          if (zb.px[pix].prim < 0) continue;
-          resolvePixel(cfg, fs, x, y, zb.px[pix], fb, ovf.shading);
-          ++distinct;
-        }
+        distinct += resolveRow(cfg, fs, tx0, tx1, y, &zb.px[std::size_t(y - ty0) * kTile], fb, ovf.shading);
     }
   }
   for (int t = 0; t < ntiles; ++t) {

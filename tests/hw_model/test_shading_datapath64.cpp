@@ -129,6 +129,27 @@ Scene randomLighting(std::mt19937_64& rng) {
   return scene;
 }
 
+// A random configuration with random lights and materials, its quantised lighting, the
+// number of point lights (each primitive needs a field for each) and the width of the
+// shading fields' coefficients (setup's vectorSetup).
+struct RandomShading {
+  HwConfig cfg;
+  Scene scene;
+  LightingSetup L;
+  int points = 0;
+  int w = 0;
+};
+RandomShading randomShading(std::mt19937_64& rng) {
+  RandomShading r;
+  r.cfg = randomConfig(rng);
+  r.scene = randomLighting(rng);
+  OverflowCounter ovf;
+  r.L = LightingSetup::build(r.scene, r.cfg, ovf);
+  for (const Light& l : r.scene.lights) r.points += l.type == Light::Type::Point;
+  r.w = r.cfg.value_bits + r.cfg.interp_frac_bits + 2;
+  return r;
+}
+
 }  // namespace
 
 TEST(ReciprocalSqrt, SixtyFourBitShortcutEqualsTheUnit) {
@@ -153,13 +174,9 @@ TEST(ShadingUnit, SixtyFourBitDatapathEqualsTheReferenceOnRandomFieldsAndConfigu
   std::mt19937_64 rng(2064);
   int compared = 0, backFaces = 0, zeroNormals = 0, datapath64 = 0;
   for (int trial = 0; trial < 250; ++trial) {
-    const HwConfig cfg = randomConfig(rng);
-    const Scene scene = randomLighting(rng);
+    const RandomShading r = randomShading(rng);
+    const auto& [cfg, scene, L, points, w] = r;
     OverflowCounter ovf;
-    const LightingSetup L = LightingSetup::build(scene, cfg, ovf);
-    int points = 0;
-    for (const Light& l : scene.lights) points += l.type == Light::Type::Point;
-    const int w = cfg.value_bits + cfg.interp_frac_bits + 2;  // coefficient width (setup's vectorSetup)
     datapath64 += shadingDatapath64Applies(cfg);
     for (int prim = 0; prim < 8; ++prim) {
       PrimitiveSetup s;
@@ -260,4 +277,53 @@ TEST(ShadingUnit, SixtyFourBitDatapathEqualsTheReferenceOnConstructedCases) {
             }
         }
   EXPECT_EQ(compared, 3 * 2 * 5 * 2 * 81);
+}
+
+// shadeSpan (the resolve's path: a run of one primitive's winners along a row, the fields'
+// affine parts by forward differences) gives shadePixel's bits at every pixel of the run, on
+// random configurations (those past the 64-bit datapath too), fields of every width, spans
+// that start anywhere up to the largest image side, caps and depths changing per pixel.
+TEST(ShadingUnit, SpanEqualsThePixelByPixelDatapath) {
+  std::mt19937_64 rng(4096);
+  int compared = 0, longSpans = 0, capsSeen = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    const RandomShading r = randomShading(rng);
+    const auto& [cfg, scene, L, points, w] = r;
+    OverflowCounter ovf;
+    for (int prim = 0; prim < 6; ++prim) {
+      PrimitiveSetup s;
+      s.material = int(rng() % scene.materials.size());
+      s.normal = randomField(rng, w);
+      s.view = rng() % 6 == 0 ? negated(s.normal, w) : randomField(rng, w);
+      for (int i = 0; i < points; ++i) s.pointLights.push_back(randomField(rng, w));
+      const int planes = int(rng() % 3);
+      for (int i = 0; i < planes; ++i) {
+        PlaneSetup p;
+        for (int k = 0; k < 3; ++k) p.capNormal[k] = randomValue(rng, w);
+        s.planes.push_back(p);
+      }
+      for (int span = 0; span < 4; ++span) {
+        const int n = 1 + int(rng() % 64);
+        const int u = rng() % 4 == 0 ? 16383 - n : int(rng() % 2048), v = rng() % 4 == 0 ? 16383 : int(rng() % 2048);
+        std::vector<ZEntry> winners(static_cast<std::size_t>(n));
+        for (ZEntry& e : winners) {
+          const int cap = planes > 0 && rng() % 3 == 0 ? int(rng() % std::uint64_t(planes)) : -1;
+          e.set(i128(rng() % (std::uint64_t(1) << (cfg.depth_bits - 1))), 0, prim, cap);
+          capsSeen += cap >= 0;
+        }
+        std::vector<std::array<std::uint8_t, 3>> rgb(static_cast<std::size_t>(n));
+        shadeSpan(s, L, cfg, u, v, n, winners.data(), rgb.data(), ovf);
+        for (int i = 0; i < n; ++i) {
+          const ZEntry& e = winners[std::size_t(i)];
+          ASSERT_EQ(rgb[std::size_t(i)], shadePixel(s, L, cfg, u + i, v, e.depth, int(e.cap), ovf))
+              << "trial " << trial << " span of " << n << " at " << u << "," << v << " pixel " << i;
+          ++compared;
+        }
+        longSpans += n >= 32;
+      }
+    }
+  }
+  EXPECT_GT(compared, 120 * 6 * 4 * 16);
+  EXPECT_GT(longSpans, 500);
+  EXPECT_GT(capsSeen, 1000);
 }
