@@ -10,8 +10,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <sys/wait.h>
-
 #include "modeling/geometry/natural_quadrics.h"
 #include "modeling/tessellation/tessellation.h"
 #include "raster/metrics/coverage_error.h"
@@ -20,6 +18,7 @@
 #include "raster/metrics/psnr.h"
 #include "raster/reference/reference_renderer.h"
 #include "raster/metrics/silhouette_distance.h"
+#include "tests/tools/command_run.h"
 #include "tools/engines/image_size.h"
 
 using namespace qacc;
@@ -51,13 +50,10 @@ int runCompareCommand(const std::string& scene, const std::string& args, const s
   namespace fs = std::filesystem;
   const fs::path out = fs::path(QACC_BINARY_DIR) / dir;
   fs::remove_all(out);
-  const std::string log = out.string() + ".log";
-  const std::string cmd = std::string(QACC_EXE) + " compare " + QACC_SOURCE_DIR + "/scenes/" + scene + " " + args +
-                          " --out " + out.string() + " > " + log + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  std::ifstream lf(log);
-  text.assign(std::istreambuf_iterator<char>(lf), std::istreambuf_iterator<char>());
-  return status;
+  const CommandRun r = runCommand(qaccCommand("compare " + std::string(QACC_SOURCE_DIR) + "/scenes/" + scene + " " +
+                                              args + " --out " + out.string() + " 2>&1"));
+  text = r.out;
+  return r.status;
 }
 
 }  // namespace
@@ -163,8 +159,7 @@ TEST(CompareCommand, RefusesAnImageOverTheSizeLimit) {
   // The same size check as render and batch (tools/engines/image_size.h), limit included.
   std::string text;
   const int status = runCompareCommand("gallery.json", "--levels 8 --width 100000 --height 240", "test_compare_size_out", text);
-  ASSERT_TRUE(WIFEXITED(status)) << text;
-  EXPECT_EQ(WEXITSTATUS(status), 1) << text;
+  EXPECT_EQ(status, 1) << text;
   EXPECT_NE(text.find("qacc: error: image size 100000x240 is over the limit"), std::string::npos) << text;
 }
 
@@ -187,13 +182,10 @@ TEST(ImageSize, OneCheckForEveryCommand) {
 
 TEST(CompareCommand, FacetsEngineRefusesClearlyWithoutOsmesa) {
   if (facetRendererAvailable()) GTEST_SKIP() << "OSMesa is built in";
-  const std::string log = std::string(QACC_BINARY_DIR) + "/test_compare_noosmesa.log";
-  const std::string cmd = std::string(QACC_EXE) + " render " + QACC_SOURCE_DIR +
-                          "/scenes/gallery.json -o /dev/null --engine facets > " + log + " 2>&1";
-  EXPECT_NE(std::system(cmd.c_str()), 0);
-  std::ifstream lf(log);
-  const std::string text((std::istreambuf_iterator<char>(lf)), std::istreambuf_iterator<char>());
-  EXPECT_NE(text.find("OSMesa"), std::string::npos) << text;
+  const CommandRun r = runCommand(
+      qaccCommand("render " + std::string(QACC_SOURCE_DIR) + "/scenes/gallery.json -o /dev/null --engine facets 2>&1"));
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("OSMesa"), std::string::npos) << r.out;
 }
 
 TEST(CompareCommand, AlgebraicSceneFacetsAreTrianglesOfTheTrueSurface) {

@@ -3,8 +3,6 @@
 // sweep; and the command line's refusals of flags an engine does not read.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/tools/command_run.h"
 #include "tools/engines/reference_cache.h"
 #include "tools/sweep/autosize.h"
 #include "tools/sweep/pareto_front.h"
@@ -40,20 +39,8 @@ std::string write(const fs::path& p, const std::string& text) {
   return p.string();
 }
 
-struct CmdRun {
-  int status = 0;
-  std::string out;
-};
-
-CmdRun run(const std::string& cmd) {
-  CmdRun r;
-  FILE* f = popen((cmd + " 2>&1").c_str(), "r");
-  char buf[4096];
-  while (f && fgets(buf, sizeof buf, f)) r.out += buf;
-  const int st = f ? pclose(f) : -1;
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
+// A command's exit status and its output, standard error included.
+qacc::CommandRun run(const std::string& cmd) { return qacc::runCommand(cmd + " 2>&1"); }
 
 std::string qaccExe() { return QACC_EXE; }
 
@@ -146,12 +133,12 @@ TEST(Sweep, ShardsThroughGnuParallelMergeToTheUnshardedRun) {
   const fs::path d = tempDir("shards");
   const std::string spec = tinySpec(d);
   const std::string cache = "--cache " + (d / "cache").string();
-  CmdRun whole = run(qaccExe() + " sweep " + spec + " --out " + (d / "whole").string() + " --no-report " + cache);
+  qacc::CommandRun whole = run(qaccExe() + " sweep " + spec + " --out " + (d / "whole").string() + " --no-report " + cache);
   ASSERT_EQ(whole.status, 0) << whole.out;
-  CmdRun shards = run("parallel " + qaccExe() + " sweep " + spec + " --shard {}/3 --out " + (d / "part{}").string() +
+  qacc::CommandRun shards = run("parallel " + qaccExe() + " sweep " + spec + " --shard {}/3 --out " + (d / "part{}").string() +
                    " --no-report " + cache + " ::: 1 2 3");
   ASSERT_EQ(shards.status, 0) << shards.out;
-  CmdRun merge = run(qaccExe() + " sweep --merge " + (d / "part1").string() + " " + (d / "part2").string() + " " +
+  qacc::CommandRun merge = run(qaccExe() + " sweep --merge " + (d / "part1").string() + " " + (d / "part2").string() + " " +
                   (d / "part3").string() + " --out " + (d / "merged").string() + " --no-report");
   ASSERT_EQ(merge.status, 0) << merge.out;
   const nlohmann::json a = results(d / "whole"), b = results(d / "merged");
@@ -159,7 +146,7 @@ TEST(Sweep, ShardsThroughGnuParallelMergeToTheUnshardedRun) {
   EXPECT_EQ(comparable(a["rows"]), comparable(b["rows"]));
   EXPECT_EQ(a["fronts"], b["fronts"]);
   // A missing shard is refused.
-  CmdRun partial = run(qaccExe() + " sweep --merge " + (d / "part1").string() + " " + (d / "part2").string() + " --out " +
+  qacc::CommandRun partial = run(qaccExe() + " sweep --merge " + (d / "part1").string() + " " + (d / "part2").string() + " --out " +
                     (d / "bad").string() + " --no-report");
   EXPECT_EQ(partial.status, 1);
   EXPECT_NE(partial.out.find("missing"), std::string::npos) << partial.out;
@@ -169,10 +156,10 @@ TEST(Sweep, SecondSweepRendersNoReference) {
   const fs::path d = tempDir("cache");
   const std::string spec = tinySpec(d);
   const std::string cmd = qaccExe() + " sweep " + spec + " --no-report --cache " + (d / "cache").string() + " --out ";
-  CmdRun first = run(cmd + (d / "one").string());
+  qacc::CommandRun first = run(cmd + (d / "one").string());
   ASSERT_EQ(first.status, 0) << first.out;
   EXPECT_NE(first.out.find("2 renders"), std::string::npos) << first.out;  // one per scene
-  CmdRun second = run(cmd + (d / "two").string());
+  qacc::CommandRun second = run(cmd + (d / "two").string());
   ASSERT_EQ(second.status, 0) << second.out;
   EXPECT_NE(second.out.find("0 renders"), std::string::npos) << second.out;
   const nlohmann::json two = results(d / "two"), one = results(d / "one");
@@ -234,17 +221,17 @@ TEST(CommandLine, FlagsAnEngineDoesNotReadAreRefused) {
                {"--engine hw-cycle --shading pixel", "--shading is read by the facets engine only"},
                {"--engine facets --config " + cfg, "--config is read by the accelerator engines"}};
   for (const Case& c : cases) {
-    const CmdRun r = run(qaccExe() + " render " + scene + " " + c.args);
+    const qacc::CommandRun r = run(qaccExe() + " render " + scene + " " + c.args);
     EXPECT_EQ(r.status, 1) << c.args << ": " << r.out;
     EXPECT_NE(r.out.find("qacc: error: " + c.message), std::string::npos) << c.args << ": " << r.out;
   }
   // --stats works for every engine; a configuration without a name is named after its file.
-  const CmdRun ref = run(qaccExe() + " render " + scene + " --stats " + (d / "ref.json").string());
+  const qacc::CommandRun ref = run(qaccExe() + " render " + scene + " --stats " + (d / "ref.json").string());
   ASSERT_EQ(ref.status, 0) << ref.out;
   std::ifstream in(d / "ref.json");
   EXPECT_EQ(nlohmann::json::parse(in)["engine"], "reference");
   const std::string named = write(d / "narrow16.json", R"({"format": "qacc-hw-config/1", "value_bits": 16})");
-  const CmdRun hw = run(qaccExe() + " render " + scene + " --engine hw --config " + named + " --stats " + (d / "hw.json").string());
+  const qacc::CommandRun hw = run(qaccExe() + " render " + scene + " --engine hw --config " + named + " --stats " + (d / "hw.json").string());
   ASSERT_EQ(hw.status, 0) << hw.out;
   EXPECT_NE(hw.out.find("hw [narrow16]"), std::string::npos) << hw.out;
   std::ifstream hin(d / "hw.json");
