@@ -11,13 +11,16 @@
 namespace qacc {
 
 std::uint64_t resolveRow(const HwConfig& cfg, const FrameSetup& fs, int x0, int x1, int y, const ZEntry* row,
-                         FrameBuffer& fb, OverflowCounter& ovf) {
+                         const std::array<std::uint8_t, 3>& background, FrameBuffer& fb, OverflowCounter& ovf) {
   std::uint64_t written = 0;
   std::array<std::uint8_t, 3> rgb[256];
   for (int x = x0; x < x1;) {
     const ZEntry& e = row[x - x0];
-    if (e.prim < 0) {
-      ++x;
+    if (e.prim < 0) {  // the background up to the next winner
+      int end = x + 1;
+      while (end < x1 && row[end - x0].prim < 0) ++end;
+      fb.clearRect(x, y, end, y + 1, background);
+      x = end;
       continue;
     }
     // The run of this primitive's winners from x (at most 256 at a time).
@@ -43,14 +46,13 @@ std::uint64_t resolveRow(const HwConfig& cfg, const FrameSetup& fs, int x0, int 
 FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs, const ZBufferMemory& zb,
                          int threads, HwStats& stats) {
   const auto background = toSrgb8(scene.background);
-  FrameBuffer fb = FrameBuffer::uninitialised(scene.width, scene.height);  // rows cleared below, in parallel
+  FrameBuffer fb = FrameBuffer::uninitialised(scene.width, scene.height);  // every pixel written below, in parallel
   const int nt = threads > 0 ? threads : omp_get_max_threads();
   std::uint64_t distinct = 0;
 #pragma omp parallel for schedule(dynamic, 8) num_threads(nt) reduction(+ : distinct)
   for (int y = 0; y < scene.height; ++y) {
     OverflowCounter local;
-    fb.clearRect(0, y, scene.width, y + 1, background);
-    distinct += resolveRow(cfg, fs, 0, scene.width, y, &zb.px[zb.index(0, y)], fb, local);
+    distinct += resolveRow(cfg, fs, 0, scene.width, y, &zb.px[zb.index(0, y)], background, fb, local);
   }
   stats.distinct_written = distinct;
   return fb;

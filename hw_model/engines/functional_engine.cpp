@@ -53,8 +53,8 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   // frame's depth state never exists as a whole: the tile's winners are shaded into the
   // frame buffer as soon as its last primitive is drawn.
   constexpr int kTile = TileBinner::kTileSize;
-  // The frame buffer is not cleared up front: each tile clears its own rectangle (in
-  // parallel, first touching its pages) and then shades its winners over it.
+  // The frame buffer is not cleared up front: each tile writes each of its pixels once (in
+  // parallel, first touching its pages), its winners shaded and the rest the background.
   const auto background = toSrgb8(scene.background);
   FrameBuffer fb = FrameBuffer::uninitialised(W, H);
   const int ntiles = bins.tiles();
@@ -85,8 +85,10 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
       PixelCounters& px = pc[std::size_t(t)];
       OverflowCounters& ovf = oc[std::size_t(t)];
       const std::vector<int>& bin = bins.bin(t);
-      fb.clearRect(tx0, ty0, tx1, ty1, background);
-      if (bin.empty()) continue;
+      if (bin.empty()) {
+        fb.clearRect(tx0, ty0, tx1, ty1, background);
+        continue;
+      }
       zb.clear();
       std::optional<HierarchicalZMemory> hiz;
       if (useHiz) hiz.emplace(cfg, tx0, ty0, tx1 - tx0, ty1 - ty0);
@@ -153,7 +155,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
         if (looked) hizSeen[std::size_t(k)].fetch_or(std::uint8_t(1 | (accepted ? 2 : 0)), std::memory_order_relaxed);
       }
       for (int y = ty0; y < ty1; ++y)
-        distinct += resolveRow(cfg, fs, tx0, tx1, y, &zb.px[std::size_t(y - ty0) * kTile], fb, ovf.shading);
+        distinct += resolveRow(cfg, fs, tx0, tx1, y, &zb.px[std::size_t(y - ty0) * kTile], background, fb, ovf.shading);
     }
   }
   for (int t = 0; t < ntiles; ++t) {
