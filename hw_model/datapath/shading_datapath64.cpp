@@ -39,7 +39,7 @@ inline i128 fieldDepthPart(const VectorSetup& f, int k, i128 z) {
 }
 
 // The shading of one pixel from its normal and view fields (raw, exact; the normal is
-// unused on a cap): inlined into shadePixel's and shadeSpan's one dispatch (by rounding,
+// unused on a cap): inlined into shadeSpan's one dispatch (by rounding,
 // normaliser and coefficient width), no call per level, the colour bytes in one register.
 template <Rounding R, Normalizer Z, bool Narrow>
 [[gnu::always_inline]] inline std::array<std::uint8_t, 3> shadeFields(const PrimitiveSetup& s, const LightingSetup& L,
@@ -86,18 +86,6 @@ template <Rounding R, Normalizer Z, bool Narrow>
   const Reg top = Reg(1) << cf;
   for (int k = 0; k < 3; ++k) rgb[std::size_t(k)] = L.srgb[std::size_t(std::clamp<Reg>(out[k], 0, top))];
   return rgb;
-}
-
-template <Rounding R, Normalizer Z, bool Narrow>
-[[gnu::always_inline]] inline std::array<std::uint8_t, 3> shade64(const PrimitiveSetup& s, const LightingSetup& L,
-                                                                  const HwConfig& cfg, int u, int v, i128 z, int cap) {
-  const int Fz = cfg.depth_frac_bits;
-  i128 rawN[3], rawV[3];
-  for (int k = 0; k < 3; ++k) {
-    rawN[k] = cap >= 0 ? 0 : evalShadingField<Narrow>(s.normal, k, u, v, z, Fz);
-    rawV[k] = evalShadingField<Narrow>(s.view, k, u, v, z, Fz);
-  }
-  return shadeFields<R, Z, Narrow>(s, L, cfg, u, v, z, cap, rawN, rawV);
 }
 
 // The n winners of a row: the normal and view fields' affine parts advance by forward
@@ -163,21 +151,25 @@ template <typename F>
 
 }  // namespace
 
-// shadePixel and shadeSpan (shading_arithmetic.h) live here, beside the datapath they
+// shadeSpan and shadePixel (shading_arithmetic.h) live here, beside the datapath they
 // dispatch to: one switch a call.
+// A pixel is a span of one (the depth within the 64-bit datapath's depth_bits <= 40 fits
+// the record's 48 bits).
 std::array<std::uint8_t, 3> shadePixel(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v,
                                        i128 z, int cap, OverflowCounter& ovf) {
-  (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
   if (!shadingDatapath64Applies(cfg)) return shadePixelWide(s, L, cfg, u, v, z, cap);
-  return dispatch64(cfg, [&](auto r, auto n, auto w) {
-    return shade64<decltype(r)::value, decltype(n)::value, decltype(w)::value>(s, L, cfg, u, v, z, cap);
-  });
+  ZEntry e;
+  e.set(z, 0, 0, cap);
+  std::array<std::uint8_t, 3> rgb;
+  shadeSpan(s, L, cfg, u, v, 1, &e, &rgb, ovf);
+  return rgb;
 }
 
 void shadeSpan(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v, int n,
                const ZEntry* winners, std::array<std::uint8_t, 3>* rgb, OverflowCounter& ovf) {
+  (void)ovf;  // colours above white clamp by design (as in every renderer), not an overflow
   if (!shadingDatapath64Applies(cfg)) {
-    for (int i = 0; i < n; ++i) rgb[i] = shadePixel(s, L, cfg, u + i, v, winners[i].depth, int(winners[i].cap), ovf);
+    for (int i = 0; i < n; ++i) rgb[i] = shadePixelWide(s, L, cfg, u + i, v, winners[i].depth, int(winners[i].cap));
     return;
   }
   dispatch64(cfg, [&](auto r, auto z, auto w) {

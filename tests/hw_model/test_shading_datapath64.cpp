@@ -280,7 +280,8 @@ TEST(ShadingUnit, SixtyFourBitDatapathEqualsTheReferenceOnConstructedCases) {
 }
 
 // shadeSpan (the resolve's path: a run of one primitive's winners along a row, the fields'
-// affine parts by forward differences) gives shadePixel's bits at every pixel of the run, on
+// affine parts by forward differences) gives shadePixel's bits (a span of one) and the
+// reference's (shadePixelWide) at every pixel of the run, on
 // random configurations (those past the 64-bit datapath too), fields of every width, spans
 // that start anywhere up to the largest image side, caps and depths changing per pixel.
 TEST(ShadingUnit, SpanEqualsThePixelByPixelDatapath) {
@@ -316,6 +317,8 @@ TEST(ShadingUnit, SpanEqualsThePixelByPixelDatapath) {
         for (int i = 0; i < n; ++i) {
           const ZEntry& e = winners[std::size_t(i)];
           ASSERT_EQ(rgb[std::size_t(i)], shadePixel(s, L, cfg, u + i, v, e.depth, int(e.cap), ovf))
+              << "trial " << trial << " span of " << n << " at " << u << "," << v << " pixel " << i;
+          ASSERT_EQ(rgb[std::size_t(i)], shadePixelWide(s, L, cfg, u + i, v, e.depth, int(e.cap)))
               << "trial " << trial << " span of " << n << " at " << u << "," << v << " pixel " << i;
           ++compared;
         }
