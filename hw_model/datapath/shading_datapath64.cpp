@@ -32,25 +32,59 @@ inline unsigned __int128 fieldRowPart(const VectorSetup& f, int k, int u, int v,
   }
   return (unsigned __int128)uv << Fz;
 }
+// Its depth part cz · z (the products of evalShadingField).
 template <bool Narrow>
-inline i128 fieldDepthPart(const VectorSetup& f, int k, i128 z) {
-  if constexpr (Narrow) return i128(std::int64_t(f.cz[k])) * i128(std::int64_t(z));
-  return f.cz[k] * z;
+inline i128 fieldDepthPart(i128 cz, i128 z) {
+  if constexpr (Narrow) return i128(std::int64_t(cz)) * i128(std::int64_t(z));
+  return cz * z;
 }
 
+// What every pixel of a span reads besides its fields: the formats, the material, the
+// lights and the ROMs, copied out of the configuration, the lighting and the primitive once
+// a span, so that the loop keeps them in registers (a colour byte stored through rgb may
+// alias anything, and would make the compiler load them again after every pixel).
+template <Rounding R, Normalizer Z>
+struct SpanConstants {
+  VectorNormalizer64<R, Z> unit;
+  int Fz, uf, cf;
+  Reg one, top;
+  Reg color[3], ambient[3];
+  const std::int32_t* specular;
+  const LightingSetup::Directional64* directional;
+  std::size_t directionals;
+  const LightingSetup::Point64* points;
+  std::size_t pointCount;
+  const VectorSetup* pointFields;
+  const PlaneSetup* planes;
+  const std::uint8_t* srgb;
+  SpanConstants(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg)
+      : unit(cfg), Fz(cfg.depth_frac_bits), uf(cfg.unit_frac_bits), cf(cfg.color_frac_bits), one(Reg(1) << uf),
+        top(Reg(1) << cf), directional(L.directional64.data()), directionals(L.directional64.size()),
+        points(L.points64.data()), pointCount(L.points64.size()), pointFields(s.pointLights.data()),
+        planes(s.planes.data()), srgb(L.srgb.data()) {
+    const int mi = s.material >= 0 && s.material < int(L.materials64.size()) ? s.material : 0;
+    const LightingSetup::Material64& m = L.materials64[std::size_t(mi)];
+    for (int k = 0; k < 3; ++k) {
+      color[k] = m.color[k];
+      ambient[k] = m.ambient[k];
+    }
+    specular = m.specular;
+  }
+};
+
 // The shading of one pixel from its normal and view fields (raw, exact; the normal is
-// unused on a cap): inlined into shadeSpan's one dispatch (by rounding,
-// normaliser and coefficient width), no call per level, the colour bytes in one register.
+// unused on a cap): inlined into shadeSpan's one dispatch (by rounding, normaliser and
+// coefficient width), no call per level, the colour bytes in one register.
 template <Rounding R, Normalizer Z, bool Narrow>
-[[gnu::always_inline]] inline std::array<std::uint8_t, 3> shadeFields(const PrimitiveSetup& s, const LightingSetup& L,
-                                                                      const HwConfig& cfg, int u, int v, i128 z,
-                                                                      int cap, const i128 rawN[3], const i128 rawV[3]) {
-  const VectorNormalizer64<R, Z> unit(cfg);
-  const int Fz = cfg.depth_frac_bits, uf = cfg.unit_frac_bits, cf = cfg.color_frac_bits;
+[[gnu::always_inline]] inline std::array<std::uint8_t, 3> shadeFields(const SpanConstants<R, Z>& c, int u, int v,
+                                                                      i128 z, int cap, const i128 rawN[3],
+                                                                      const i128 rawV[3]) {
+  const VectorNormalizer64<R, Z>& unit = c.unit;
+  const int uf = c.uf;
   Reg N[3], V[3];
   if (cap >= 0) {
     i128 capN[3];
-    for (int k = 0; k < 3; ++k) capN[k] = s.planes[std::size_t(cap)].capNormal[k];
+    for (int k = 0; k < 3; ++k) capN[k] = c.planes[cap].capNormal[k];
     unit.normalize(capN, N);
   } else {
     unit.normalize(rawN, N);
@@ -58,33 +92,30 @@ template <Rounding R, Normalizer Z, bool Narrow>
   unit.normalize(rawV, V);
   if (dot<R>(N, V, uf) < 0)
     for (int k = 0; k < 3; ++k) N[k] = -N[k];  // two-sided
-  const int mi = s.material >= 0 && s.material < int(L.materials64.size()) ? s.material : 0;
-  const LightingSetup::Material64& m = L.materials64[std::size_t(mi)];
-  const Reg one = Reg(1) << uf;
-  Reg out[3] = {m.ambient[0], m.ambient[1], m.ambient[2]};
+  Reg out[3] = {c.ambient[0], c.ambient[1], c.ambient[2]};
   // Lambert + Blinn-Phong of one light from the unit vector Lv towards it.
   auto light = [&](const Reg Lv[3], const Reg color[3]) {
-    const Reg ndl = std::min(dot<R>(N, Lv, uf), one);
+    const Reg ndl = std::min(dot<R>(N, Lv, uf), c.one);
     if (ndl <= 0) return;
     Reg H[3];
     const Reg hs[3] = {Lv[0] + V[0], Lv[1] + V[1], Lv[2] + V[2]};
     unit.normalize(hs, H);
-    const Reg ndh = std::clamp<Reg>(dot<R>(N, H, uf), 0, one);
-    const Reg spec = m.specular[ndh];
+    const Reg ndh = std::clamp<Reg>(dot<R>(N, H, uf), 0, c.one);
+    const Reg spec = c.specular[ndh];
     for (int k = 0; k < 3; ++k)
-      out[k] += shiftRoundFitR<R, Reg>(color[k] * (shiftRoundFitR<R, Reg>(m.color[k] * ndl, uf) + spec), cf);
+      out[k] += shiftRoundFitR<R, Reg>(color[k] * (shiftRoundFitR<R, Reg>(c.color[k] * ndl, uf) + spec), c.cf);
   };
-  for (const LightingSetup::Directional64& d : L.directional64) light(d.dir, d.color);
-  for (const LightingSetup::Point64& p : L.points64) {
+  for (std::size_t i = 0; i < c.directionals; ++i) light(c.directional[i].dir, c.directional[i].color);
+  for (std::size_t i = 0; i < c.pointCount; ++i) {
+    const LightingSetup::Point64& p = c.points[i];
     i128 raw[3];
-    for (int k = 0; k < 3; ++k) raw[k] = evalShadingField<Narrow>(s.pointLights[std::size_t(p.point)], k, u, v, z, Fz);
+    for (int k = 0; k < 3; ++k) raw[k] = evalShadingField<Narrow>(c.pointFields[p.point], k, u, v, z, c.Fz);
     Reg Lv[3];
     unit.normalize(raw, Lv);
     light(Lv, p.color);
   }
   std::array<std::uint8_t, 3> rgb;
-  const Reg top = Reg(1) << cf;
-  for (int k = 0; k < 3; ++k) rgb[std::size_t(k)] = L.srgb[std::size_t(std::clamp<Reg>(out[k], 0, top))];
+  for (int k = 0; k < 3; ++k) rgb[std::size_t(k)] = c.srgb[std::clamp<Reg>(out[k], 0, c.top)];
   return rgb;
 }
 
@@ -94,25 +125,29 @@ template <Rounding R, Normalizer Z, bool Narrow>
 void shadeSpan64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v, int n,
                  const ZEntry* winners, std::array<std::uint8_t, 3>* rgb) {
   using U = unsigned __int128;
-  const int Fz = cfg.depth_frac_bits;
+  const SpanConstants<R, Z> c(s, L, cfg);
+  const int Fz = c.Fz;
   U rowN[3], rowV[3], stepN[3], stepV[3];
+  i128 czN[3], czV[3];
   for (int k = 0; k < 3; ++k) {
     rowN[k] = fieldRowPart<Narrow>(s.normal, k, u, v, Fz);
     rowV[k] = fieldRowPart<Narrow>(s.view, k, u, v, Fz);
     stepN[k] = U(s.normal.uv[k].A) << Fz;
     stepV[k] = U(s.view.uv[k].A) << Fz;
+    czN[k] = s.normal.cz[k];
+    czV[k] = s.view.cz[k];
   }
   for (int i = 0; i < n; ++i) {
     const i128 z = winners[i].depth;
     const int cap = int(winners[i].cap);
     i128 rawN[3], rawV[3];
     for (int k = 0; k < 3; ++k) {
-      rawN[k] = i128(rowN[k] + U(fieldDepthPart<Narrow>(s.normal, k, z)));
-      rawV[k] = i128(rowV[k] + U(fieldDepthPart<Narrow>(s.view, k, z)));
+      rawN[k] = i128(rowN[k] + U(fieldDepthPart<Narrow>(czN[k], z)));
+      rawV[k] = i128(rowV[k] + U(fieldDepthPart<Narrow>(czV[k], z)));
       rowN[k] += stepN[k];
       rowV[k] += stepV[k];
     }
-    rgb[i] = shadeFields<R, Z, Narrow>(s, L, cfg, u + i, v, z, cap, rawN, rawV);
+    rgb[i] = shadeFields<R, Z, Narrow>(c, u + i, v, z, cap, rawN, rawV);
   }
 }
 
