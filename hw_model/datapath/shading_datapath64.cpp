@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <type_traits>
+#include <vector>
 
-#include "hw_model/datapath/shading_field.h"
 #include "hw_model/datapath/vector_normalizer64.h"
 
 namespace qacc {
@@ -75,10 +75,10 @@ struct SpanConstants {
 // The shading of one pixel from its normal and view fields (raw, exact; the normal is
 // unused on a cap): inlined into shadeSpan's one dispatch (by rounding, normaliser and
 // coefficient width), no call per level, the colour bytes in one register.
-template <Rounding R, Normalizer Z, bool Narrow>
-[[gnu::always_inline]] inline std::array<std::uint8_t, 3> shadeFields(const SpanConstants<R, Z>& c, int u, int v,
-                                                                      i128 z, int cap, const i128 rawN[3],
-                                                                      const i128 rawV[3]) {
+template <Rounding R, Normalizer Z>
+[[gnu::always_inline]] inline std::array<std::uint8_t, 3> shadeFields(const SpanConstants<R, Z>& c, int cap,
+                                                                      const i128 rawN[3], const i128 rawV[3],
+                                                                      const i128* rawP) {
   const VectorNormalizer64<R, Z>& unit = c.unit;
   const int uf = c.uf;
   Reg N[3], V[3];
@@ -107,12 +107,9 @@ template <Rounding R, Normalizer Z, bool Narrow>
   };
   for (std::size_t i = 0; i < c.directionals; ++i) light(c.directional[i].dir, c.directional[i].color);
   for (std::size_t i = 0; i < c.pointCount; ++i) {
-    const LightingSetup::Point64& p = c.points[i];
-    i128 raw[3];
-    for (int k = 0; k < 3; ++k) raw[k] = evalShadingField<Narrow>(c.pointFields[p.point], k, u, v, z, c.Fz);
     Reg Lv[3];
-    unit.normalize(raw, Lv);
-    light(Lv, p.color);
+    unit.normalize(rawP + 3 * i, Lv);
+    light(Lv, c.points[i].color);
   }
   std::array<std::uint8_t, 3> rgb;
   for (int k = 0; k < 3; ++k) rgb[std::size_t(k)] = c.srgb[std::clamp<Reg>(out[k], 0, c.top)];
@@ -137,6 +134,22 @@ void shadeSpan64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig
     czN[k] = s.normal.cz[k];
     czV[k] = s.view.cz[k];
   }
+  // The point lights' fields (towards each light), likewise: three components a light in a
+  // per-thread scratch that keeps its storage from span to span.
+  const std::size_t np3 = 3 * c.pointCount;
+  thread_local std::vector<U> pointScratch;
+  thread_local std::vector<i128> pointRaw;
+  pointScratch.resize(2 * np3);
+  pointRaw.resize(np3);
+  U* rowP = pointScratch.data();
+  U* stepP = rowP + np3;
+  i128* rawP = pointRaw.data();
+  for (std::size_t j = 0; j < c.pointCount; ++j)
+    for (int k = 0; k < 3; ++k) {
+      const VectorSetup& f = c.pointFields[c.points[j].point];
+      rowP[3 * j + std::size_t(k)] = fieldRowPart<Narrow>(f, k, u, v, Fz);
+      stepP[3 * j + std::size_t(k)] = U(f.uv[k].A) << Fz;
+    }
   for (int i = 0; i < n; ++i) {
     const i128 z = winners[i].depth;
     const int cap = int(winners[i].cap);
@@ -147,7 +160,14 @@ void shadeSpan64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig
       rowN[k] += stepN[k];
       rowV[k] += stepV[k];
     }
-    rgb[i] = shadeFields<R, Z, Narrow>(c, u + i, v, z, cap, rawN, rawV);
+    for (std::size_t j = 0; j < c.pointCount; ++j) {
+      const VectorSetup& f = c.pointFields[c.points[j].point];
+      for (std::size_t k = 0; k < 3; ++k) {
+        rawP[3 * j + k] = i128(rowP[3 * j + k] + U(fieldDepthPart<Narrow>(f.cz[k], z)));
+        rowP[3 * j + k] += stepP[3 * j + k];
+      }
+    }
+    rgb[i] = shadeFields<R, Z>(c, cap, rawN, rawV, rawP);
   }
 }
 
