@@ -4,6 +4,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "hw_model/datapath/shading_field.h"
 #include "hw_model/datapath/vector_normalizer64.h"
 
 namespace qacc {
@@ -15,28 +16,6 @@ using Reg = std::int64_t;
 template <Rounding R>
 inline Reg dot(const Reg a[3], const Reg b[3], int uf) {
   return shiftRoundFitR<R, Reg>(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], uf);
-}
-
-// The affine part of a shading field's component k at (u, v), uv(u, v) << Fz, as the bits of a
-// 128-bit register (evalShadingField adds cz · z to it): along a row it advances by
-// A << Fz a pixel, the same bits modulo 2^128.
-template <bool Narrow>
-inline unsigned __int128 fieldRowPart(const VectorSetup& f, int k, int u, int v, int Fz) {
-  const LinearCoefficients& c = f.uv[k];
-  i128 uv;
-  if constexpr (Narrow) {
-    auto mul64 = [](i128 a, i128 b) { return i128(std::int64_t(a)) * i128(std::int64_t(b)); };
-    uv = mul64(c.A, u) + mul64(c.B, v) + c.C;
-  } else {
-    uv = c.A * u + c.B * v + c.C;
-  }
-  return (unsigned __int128)uv << Fz;
-}
-// Its depth part cz · z (the products of evalShadingField).
-template <bool Narrow>
-inline i128 fieldDepthPart(i128 cz, i128 z) {
-  if constexpr (Narrow) return i128(std::int64_t(cz)) * i128(std::int64_t(z));
-  return cz * z;
 }
 
 // What every pixel of a span reads besides its fields: the formats, the material, the
@@ -117,7 +96,7 @@ template <Rounding R, Normalizer Z>
 }
 
 // The n winners of a row: the normal and view fields' affine parts advance by forward
-// differences (the same bits as evalShadingField at each pixel: see fieldRowPart).
+// differences (the same bits as evalShadingField at each pixel: shading_field.h).
 template <Rounding R, Normalizer Z, bool Narrow>
 void shadeSpan64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig& cfg, int u, int v, int n,
                  const ZEntry* winners, std::array<std::uint8_t, 3>* rgb) {
@@ -127,8 +106,8 @@ void shadeSpan64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig
   U rowN[3], rowV[3], stepN[3], stepV[3];
   i128 czN[3], czV[3];
   for (int k = 0; k < 3; ++k) {
-    rowN[k] = fieldRowPart<Narrow>(s.normal, k, u, v, Fz);
-    rowV[k] = fieldRowPart<Narrow>(s.view, k, u, v, Fz);
+    rowN[k] = shadingFieldRowPart<Narrow>(s.normal, k, u, v, Fz);
+    rowV[k] = shadingFieldRowPart<Narrow>(s.view, k, u, v, Fz);
     stepN[k] = U(s.normal.uv[k].A) << Fz;
     stepV[k] = U(s.view.uv[k].A) << Fz;
     czN[k] = s.normal.cz[k];
@@ -147,7 +126,7 @@ void shadeSpan64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig
   for (std::size_t j = 0; j < c.pointCount; ++j)
     for (int k = 0; k < 3; ++k) {
       const VectorSetup& f = c.pointFields[c.points[j].point];
-      rowP[3 * j + std::size_t(k)] = fieldRowPart<Narrow>(f, k, u, v, Fz);
+      rowP[3 * j + std::size_t(k)] = shadingFieldRowPart<Narrow>(f, k, u, v, Fz);
       stepP[3 * j + std::size_t(k)] = U(f.uv[k].A) << Fz;
     }
   for (int i = 0; i < n; ++i) {
@@ -155,15 +134,15 @@ void shadeSpan64(const PrimitiveSetup& s, const LightingSetup& L, const HwConfig
     const int cap = int(winners[i].cap);
     i128 rawN[3], rawV[3];
     for (int k = 0; k < 3; ++k) {
-      rawN[k] = i128(rowN[k] + U(fieldDepthPart<Narrow>(czN[k], z)));
-      rawV[k] = i128(rowV[k] + U(fieldDepthPart<Narrow>(czV[k], z)));
+      rawN[k] = i128(rowN[k] + U(shadingFieldDepthPart<Narrow>(czN[k], z)));
+      rawV[k] = i128(rowV[k] + U(shadingFieldDepthPart<Narrow>(czV[k], z)));
       rowN[k] += stepN[k];
       rowV[k] += stepV[k];
     }
     for (std::size_t j = 0; j < c.pointCount; ++j) {
       const VectorSetup& f = c.pointFields[c.points[j].point];
       for (std::size_t k = 0; k < 3; ++k) {
-        rawP[3 * j + k] = i128(rowP[3 * j + k] + U(fieldDepthPart<Narrow>(f.cz[k], z)));
+        rawP[3 * j + k] = i128(rowP[3 * j + k] + U(shadingFieldDepthPart<Narrow>(f.cz[k], z)));
         rowP[3 * j + k] += stepP[3 * j + k];
       }
     }
