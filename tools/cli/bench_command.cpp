@@ -4,10 +4,10 @@
 // 1920x1080) and per thread count (default: 1 and all cores), the reference, `hw` and
 // `hw-cycle` wall time per frame (best of --repeat, the engines alternating so that they
 // see the same machine load; a frame ends when the engine returns, its result freed after
-// the clock stops) with the page faults of that best frame, the `hw` tested pixels per second (per thread too), the
-// `hw-cycle` simulated cycles, the wall time of its pixel datapath pass (pixel_trace.h),
-// the simulation rate of the timing loop alone (simulated cycles per wall second, one
-// core), the slowdown of the whole `hw-cycle` frame against the modeled clock, and the
+// the clock stops) with the page faults of that best frame, the `hw` tested pixels per
+// second (per thread too), the `hw-cycle` simulated cycles, the wall time of its pixel
+// datapath pass (pixel_trace.h), the simulation rate of the timing loop alone (simulated
+// cycles per wall second, one core), the slowdown of the whole `hw-cycle` frame against the modeled clock, and the
 // modeled frame time at the configured clock; the header gives the configuration's
 // silicon cost (cost_model.h) and the load average. Then the ratios the performance
 // targets are stated in (docs/PERFORMANCE.md): hw against the reference at each thread
@@ -19,13 +19,13 @@
 // of it with the machine (CPU model, cores); --out OUT writes the runs as OUT.json and
 // OUT.csv rows, as `reduce` and `sweep` do. Nothing is asserted.
 #include <nlohmann/json.hpp>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <sys/resource.h>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -72,7 +72,6 @@ struct BenchRun {
   double refMs = 1e300, hwMs = 1e300, cycleMs = 1e300;
   std::uint64_t tested = 0, cycles = 0;
   double loopS = 0, traceS = 0, frameMs = 0;
-  double lastLoopS = 0, lastTraceS = 0;  // of the latest hw-cycle frame
   long refFaults = 0, hwFaults = 0, cycleFaults = 0;  // minor page faults of each engine's best frame
   double testedPerSecond() const { return double(tested) / (hwMs * 1e-3); }
   double loopRate() const { return loopS > 0 ? double(cycles) / loopS : 0.0; }
@@ -143,16 +142,17 @@ BenchRun benchOne(const Scene& scene, const HwConfig& cfg, int threads, int repe
                    [&](const HwRender& hw) { b.tested = hw.stats.pixels.tested; }),
          b.hwMs, b.hwFaults);
     if (!cycle) continue;
+    double loopS = 0, traceS = 0;  // of this frame, kept if it is the best
     const FrameTiming t = timeFrame([&] { return renderHwCycle(scene, cfg, threads); },
                                     [&](const HwRender& r) {
                                       b.cycles = r.stats.cycles;
                                       b.frameMs = r.stats.frameSeconds() * 1e3;
-                                      b.lastLoopS = r.stats.loop_seconds;
-                                      b.lastTraceS = r.stats.trace_seconds;
+                                      loopS = r.stats.loop_seconds;
+                                      traceS = r.stats.trace_seconds;
                                     });
     if (t.ms < b.cycleMs) {
-      b.loopS = b.lastLoopS;
-      b.traceS = b.lastTraceS;
+      b.loopS = loopS;
+      b.traceS = traceS;
     }
     best(t, b.cycleMs, b.cycleFaults);
   }
@@ -214,7 +214,8 @@ void runBench(const BenchArgs& a) {
         BenchRun b = benchOne(scene, cfg, t, a.repeat, a.cycle);
         b.view = fov > 0 ? "zoomed" : "full";
         b.buildMs = buildMs;
-        std::printf("%-14s %-6s %9.1f %7zu %3d %9.1f %9.1f %7.2f %12.3g %10.1f %11llu %9.1f %11.3g %9.2f %9.3f  %ld/%ld/%ld\n",
+        std::printf("%-14s %-6s %9.1f %7zu %3d %9.1f %9.1f %7.2f %12.3g %10.1f %11llu %9.1f %11.3g %9.2f %9.3f"
+                    "  %ld/%ld/%ld\n",
                     b.scene.c_str(), b.view.c_str(), b.buildMs, b.primitives, b.threads, b.refMs, b.hwMs,
                     b.refMs / b.hwMs, b.testedPerSecond(), b.cycleMs, (unsigned long long)b.cycles, b.traceS * 1e3,
                     b.loopRate(), b.frameMs > 0 ? b.cycleMs / b.frameMs : 0.0, b.frameMs, b.refFaults, b.hwFaults,
