@@ -27,14 +27,4 @@ Eigen::Vector3d shadeLinear(const Scene& scene, const Material& m, const Eigen::
   return out;
 }
 
-std::uint8_t linearToSrgb8(double v) {
-  v = std::clamp(v, 0.0, 1.0);
-  const double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-  return static_cast<std::uint8_t>(std::lround(s * 255.0));
-}
-
-std::array<std::uint8_t, 3> toSrgb8(const Eigen::Vector3d& c) {
-  return {linearToSrgb8(c.x()), linearToSrgb8(c.y()), linearToSrgb8(c.z())};
-}
-
 }  // namespace qacc
