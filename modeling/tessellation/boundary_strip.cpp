@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <utility>
@@ -306,15 +307,38 @@ struct Strip {
       }
       return longest > (tol.view && tol.pixels > 0 ? tol.pixels : tol.world);
     };
+    // excess() of each triangle, measured once: a triangle a round leaves as it was keeps its
+    // value (NaN: not measured yet), so a round measures only the triangles it made.
+    const double unmeasured = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> measured(out.triangles.size(), unmeasured);
+    auto excessOf = [&](std::size_t t) {
+      if (std::isnan(measured[t])) measured[t] = excess(t, tol);
+      return measured[t];
+    };
     const std::size_t budget = kStripGrowth * std::max<std::size_t>({out.triangles.size(), replaced, 1});
     for (int round = 0; round < kStripRefinements && out.triangles.size() < budget; ++round) {
       std::vector<std::size_t> over;
       for (std::size_t t = 0; t < out.triangles.size(); ++t)
-        if (longerThanTolerance(t) && excess(t, tol) > 1.0) over.push_back(t);
+        if (longerThanTolerance(t) && excessOf(t) > 1.0) over.push_back(t);
       if (over.empty()) return 1.0;
-      std::map<EdgeKey, std::vector<std::size_t>, EdgeLess> uses;
+      // The triangles using each edge, in triangle order: the (edge, triangle) pairs sorted
+      // stably by edge, an edge's run found by binary search (what a std::map of vectors
+      // gives, without an allocation per edge).
+      std::vector<std::pair<EdgeKey, std::size_t>> uses;
+      uses.reserve(3 * out.triangles.size());
       for (std::size_t t = 0; t < out.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) uses[edgeKey(at(t, k), at(t, (k + 1) % 3))].push_back(t);
+        for (int k = 0; k < 3; ++k) uses.emplace_back(edgeKey(at(t, k), at(t, (k + 1) % 3)), t);
+      const auto byEdge = [](const std::pair<EdgeKey, std::size_t>& x, const std::pair<EdgeKey, std::size_t>& y) {
+        return EdgeLess{}(x.first, y.first);
+      };
+      std::stable_sort(uses.begin(), uses.end(), byEdge);
+      // The triangles of edge e: at most the first two, and how many there are.
+      const auto usesOf = [&](const EdgeKey& e, std::size_t ts[2]) {
+        const auto range = std::equal_range(uses.begin(), uses.end(), std::pair<EdgeKey, std::size_t>{e, 0}, byEdge);
+        const std::size_t n = std::size_t(range.second - range.first);
+        for (std::size_t i = 0; i < std::min<std::size_t>(n, 2); ++i) ts[i] = range.first[std::ptrdiff_t(i)].second;
+        return n;
+      };
       std::vector<char> busy(out.triangles.size(), 0);
       std::map<EdgeKey, Vector3d, EdgeLess> mid;
       std::map<std::size_t, Vector3d> centre;
@@ -325,8 +349,8 @@ struct Strip {
         bool anyShared = false;
         for (int k = 0; k < 3; ++k) {
           const Vector3d &a = at(t, k), &b = at(t, (k + 1) % 3);
-          const auto& ts = uses[edgeKey(a, b)];
-          if (ts.size() != 2) continue;
+          std::size_t ts[2];
+          if (usesOf(edgeKey(a, b), ts) != 2) continue;
           anyShared = true;
           const std::size_t other = ts[0] == t ? ts[1] : ts[0];
           if (busy[other] || (b - a).norm() <= bestLength) continue;
@@ -337,7 +361,8 @@ struct Strip {
         if (best >= 0) {
           const Vector3d &a = at(t, best), &b = at(t, (best + 1) % 3);
           if (!ontoSurface(0.5 * (a + b), 0.5 * (b - a).norm(), p)) continue;
-          const auto& ts = uses[edgeKey(a, b)];
+          std::size_t ts[2];
+          usesOf(edgeKey(a, b), ts);  // two: best is a shared edge
           busy[ts[0]] = busy[ts[1]] = 1;
           mid.emplace(edgeKey(a, b), p);
         } else if (!anyShared) {
@@ -352,6 +377,9 @@ struct Strip {
       if (mid.empty() && centre.empty()) break;
       TriangleMesh3 next;
       std::swap(next, out);
+      std::vector<double> previous(next.triangles.size(), unmeasured);
+      std::swap(previous, measured);
+      measured.clear();
       for (std::size_t t = 0; t < next.triangles.size(); ++t) {
         const Vector3d v[3] = {next.positions[std::size_t(next.triangles[t][0])],
                                next.positions[std::size_t(next.triangles[t][1])],
@@ -360,16 +388,17 @@ struct Strip {
                                next.normals[std::size_t(next.triangles[t][1])],
                                next.normals[std::size_t(next.triangles[t][2])]};
         auto emit = [&](const Vector3d& a, const Vector3d& na, const Vector3d& b, const Vector3d& nb,
-                        const Vector3d& c, const Vector3d& nc) {
+                        const Vector3d& c, const Vector3d& nc, double excessKnown) {
           const int base = int(out.positions.size());
           out.positions.insert(out.positions.end(), {a, b, c});
           out.normals.insert(out.normals.end(), {na, nb, nc});
           out.triangles.push_back({base, base + 1, base + 2});
+          measured.push_back(excessKnown);
         };
         if (auto it = centre.find(t); it != centre.end()) {
           const Vector3d& p = it->second;
           const Vector3d np = normalAt(p);
-          for (int k = 0; k < 3; ++k) emit(v[k], n[k], v[(k + 1) % 3], n[(k + 1) % 3], p, np);
+          for (int k = 0; k < 3; ++k) emit(v[k], n[k], v[(k + 1) % 3], n[(k + 1) % 3], p, np, unmeasured);
           continue;
         }
         int split = -1;
@@ -381,19 +410,19 @@ struct Strip {
             p = it->second;
           }
         }
-        if (split < 0) {
-          emit(v[0], n[0], v[1], n[1], v[2], n[2]);
+        if (split < 0) {  // unchanged: its vertices in the same order, so the same excess()
+          emit(v[0], n[0], v[1], n[1], v[2], n[2], previous[t]);
           continue;
         }
         const int a = split, b = (split + 1) % 3, c = (split + 2) % 3;
         const Vector3d np = normalAt(p);
-        emit(v[a], n[a], p, np, v[c], n[c]);
-        emit(p, np, v[b], n[b], v[c], n[c]);
+        emit(v[a], n[a], p, np, v[c], n[c], unmeasured);
+        emit(p, np, v[b], n[b], v[c], n[c], unmeasured);
       }
     }
     double worst = 0;
     for (std::size_t t = 0; t < out.triangles.size(); ++t)
-      if (longerThanTolerance(t)) worst = std::max(worst, excess(t, tol));
+      if (longerThanTolerance(t)) worst = std::max(worst, excessOf(t));
     return worst;
   }
   // Kept chain `in` and new boundary `o`, both from the same end.

@@ -8,7 +8,10 @@
 namespace qacc {
 
 Vector3d closestPointOnQuadric(const Quadric& quadric, const Vector3d& p) {
-  const Quadric q = quadric.normalized();
+  return closestPointOnNormalizedQuadric(quadric.normalized(), p);
+}
+
+Vector3d closestPointOnNormalizedQuadric(const Quadric& q, const Vector3d& p) {
   Vector3d x = p;
   for (int it = 0; it < 30; ++it) {
     const double f = q.eval(x);
@@ -29,6 +32,7 @@ ChordError measureChordError(const TriangleMesh3& mesh, const Quadric& quadric, 
   ChordError e;
   const std::size_t last = std::min(mesh.triangles.size(), count == std::size_t(-1) ? mesh.triangles.size() : first + count);
   const int m = std::max(1, subdivisions);  // barycentric grid: vertices, edge points, interior points
+  const Quadric q = quadric.normalized();   // once for all the samples (distanceToQuadric's projection)
   double sum = 0;
   std::size_t samples = 0;
   for (std::size_t t = first; t < last; ++t) {
@@ -38,7 +42,7 @@ ChordError measureChordError(const TriangleMesh3& mesh, const Quadric& quadric, 
     for (int i = 0; i <= m; ++i)
       for (int j = 0; i + j <= m; ++j) {
         const Vector3d p = (double(i) * a + double(j) * b + double(m - i - j) * c) / double(m);
-        const double d = distanceToQuadric(quadric, p);
+        const double d = (closestPointOnNormalizedQuadric(q, p) - p).norm();
         e.max = std::max(e.max, d);
         sum += d;
         ++samples;

@@ -137,6 +137,9 @@ ChordError measureChordError(const TriangleMesh3& mesh, const Quadric& quadric, 
 double distanceToQuadric(const Quadric& quadric, const Eigen::Vector3d& p);
 // The surface point that projection reaches from p.
 Eigen::Vector3d closestPointOnQuadric(const Quadric& quadric, const Eigen::Vector3d& p);
+// The same for a quadric already normalized (Quadric::normalized, which closestPointOnQuadric
+// applies first): the same point, for many points against one quadric.
+Eigen::Vector3d closestPointOnNormalizedQuadric(const Quadric& normalized, const Eigen::Vector3d& p);
 
 // Every undirected edge (vertices identified by exact position) is used by exactly two
 // triangles, and no triangle is degenerate.
