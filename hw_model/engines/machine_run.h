@@ -2,7 +2,17 @@
 // cycle until no unit holds work and every channel is empty, jumping over cycles where
 // nothing moves to the next timed event (fast-forward). The units are passed by their
 // concrete types, so every tick is a direct call the compiler can inline into the loop.
+//
+// Cycles where nothing moves but some unit waits without a timed event of its own (stalled
+// on a full channel: a setup-bound frame, the host waiting on setup, traversal on the
+// pipelines) are not fast-forwarded: each is ticked and counted (stall, busy, idle; the
+// Z unit's conflicts and round-robin pointer advance). The clock does not tick them one by
+// one either: after such a cycle it asks every unit for the first cycle at which its tick
+// may differ (Unit::nextChange), ticks the next cycle as usual while noting every unit's
+// counters before and after, and adds that tick's counts once for each further cycle up to
+// that one (Unit::repeatTick): what ticking them would have counted, cycle for cycle.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -29,6 +39,8 @@ void each(std::optional<U>& u, F& f) {
   if (u) f(*u);
 }
 [[noreturn]] void throwDeadlock(std::uint64_t now);
+// A unit changed in a cycle before the one its nextChange gave (a bug of that unit's nextChange).
+[[noreturn]] void throwLateChange(std::uint64_t now);
 }  // namespace machine_run_detail
 
 // Calls f on every unit of the groups, in the order given.
@@ -49,12 +61,22 @@ std::uint64_t runMachine(ChannelRegistry& wires, std::uint64_t& fastForwarded, G
   // there, the frame took one cycle less than the loop ran.
   std::uint64_t quiet = 0;
   bool prevChanged = false;
+  // Repeated ticks: when armed (repeatUntil != 0), this cycle's tick is counted and repeated
+  // up to cycle repeatUntil - 1.
+  std::uint64_t repeatUntil = 0;
+  std::vector<TickCounts> before;
   for (;;) {
     bool changed = false;
     const std::uint64_t now = wires.now();
+    const bool armed = repeatUntil != 0;
+    if (armed) {
+      before.clear();
+      forEachUnit([&](auto& u) { before.push_back(u.tickCounts()); }, groups...);
+    }
     forEachUnit([&](auto& u) { changed |= u.tick(now); }, groups...);
     changed |= wires.endCycle();
     if (changed) {
+      if (armed) machine_run_detail::throwLateChange(now);
       quiet = 0;
       prevChanged = true;
       continue;
@@ -83,7 +105,31 @@ std::uint64_t runMachine(ChannelRegistry& wires, std::uint64_t& fastForwarded, G
       forEachUnit([&](auto& u) { u.skip(skip, u.holdsWork()); }, groups...);
       fastForwarded += skip;
       wires.skipTo(next);
+      repeatUntil = 0;
+      continue;
     }
+    if (armed) {
+      // Cycles wires.now() .. repeatUntil - 1 would tick as this one did (none past the
+      // deadlock limit of unchanged cycles, so a deadlock is reported at the same cycle).
+      const std::uint64_t n = std::min(repeatUntil - wires.now(), std::uint64_t(1000000) - quiet);
+      if (n > 0) {
+        std::size_t i = 0;
+        forEachUnit([&](auto& u) { u.repeatTick(before[i++], n); }, groups...);
+        quiet += n;
+        wires.skipTo(wires.now() + n);
+      }
+      repeatUntil = 0;
+      continue;
+    }
+    // The first cycle from now on at which any tick may differ from this one's.
+    std::uint64_t change = Unit::kNoEvent;
+    forEachUnit(
+        [&](auto& u) {
+          const std::uint64_t t = u.nextChange(wires.now());
+          if (t < change) change = t;
+        },
+        groups...);
+    if (change > wires.now() + 1) repeatUntil = change;  // tick wires.now(), repeat it until then
   }
   return wires.now();
 }

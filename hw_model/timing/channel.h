@@ -66,6 +66,8 @@ class Channel : public ChannelBase {
   }
   // Cycle at which the oldest item arrives (kNever when the channel is empty).
   std::uint64_t nextArrival() const { return head_; }
+  // The oldest item's arrival if it is still to come at `now` (kNever: arrived, or empty).
+  std::uint64_t arrivalFrom(std::uint64_t now) const { return head_ >= now ? head_ : kNever; }
   bool empty() const { return q_.empty(); }
   std::size_t size() const { return q_.size(); }
   std::size_t capacity() const { return capacity_; }

@@ -10,6 +10,7 @@
 // whatever the order in which the units tick (a write of cycle t is due at t + 1 or later).
 // Stale bounds are conservative: stored depths only move nearer.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 
 #include "hw_model/config/hw_config.h"
@@ -47,6 +48,10 @@ class HierarchicalZUnit final : public Unit {
     return false;  // the tile memory's state moves no token
   }
   bool holdsWork() const { return false; }  // nothing waits on a tile update
+  // Unchanged: the next tile update due (lookups come from traversal, which reports them).
+  std::uint64_t nextChange(std::uint64_t now) const {
+    return pending_.empty() ? kNoEvent : std::max(now, pending_.front().due);
+  }
   const Params& params() const { return p_; }
   HierarchicalZCounters counters;
 

@@ -32,6 +32,9 @@ class HostInterfaceUnit final : public Unit {
       : Unit("host_interface"), p_(p), setups_(setups), out_(out) {}
   bool tick(std::uint64_t now);
   std::uint64_t nextEvent() const { return busy_ ? readyAt_ : kNoEvent; }
+  // Unchanged: transferring until readyAt_, or stalled on a full channel (a receive frees it),
+  // or done.
+  std::uint64_t nextChange(std::uint64_t now) const { return busy_ && readyAt_ >= now ? readyAt_ : kNoEvent; }
   bool holdsWork() const { return next_ < int(setups_.size()) || busy_; }
 
  private:

@@ -45,6 +45,14 @@ class Pipeline {
   std::uint64_t nextEvent(bool inputWaiting) const {
     return inputWaiting ? std::min(head_, nextAccept_) : head_;
   }
+  // For a unit whose tick before `now` changed nothing (Unit::nextChange): the first cycle
+  // from `now` on at which the oldest item finishes, or at which an input that has arrived by
+  // then (`inputArrival`, kNever: none) can be accepted.
+  std::uint64_t nextChange(std::uint64_t now, std::uint64_t inputArrival) const {
+    std::uint64_t t = head_ >= now ? head_ : kNever;
+    if (inputArrival != kNever) t = std::min(t, std::max({now, nextAccept_, inputArrival}));
+    return t;
+  }
 
  private:
   struct Stage {

@@ -51,6 +51,7 @@ class PixelPipelineUnit final : public Unit {
       : Unit(name), trace_(trace), in_(in), out_(out), px_(px), stages_(wires, std::uint64_t(p.latency)), zb_(zb) {}
   bool tick(std::uint64_t now);
   std::uint64_t nextEvent() const { return stages_.nextEvent(in_.ready()); }
+  std::uint64_t nextChange(std::uint64_t now) const { return stages_.nextChange(now, in_.nextArrival()); }
   bool holdsWork() const { return stages_.holdsWork(); }
 
  private:

@@ -34,6 +34,11 @@ class SetupUnit final : public Unit {
       : Unit("setup"), p_(p), setups_(setups), in_(in), out_(out) {}
   bool tick(std::uint64_t now);
   std::uint64_t nextEvent() const { return current_ >= 0 && readyAt_ > 0 ? readyAt_ : kNoEvent; }
+  // Unchanged: computing until readyAt_, stalled on a full channel, or waiting for input.
+  std::uint64_t nextChange(std::uint64_t now) const {
+    if (current_ >= 0) return readyAt_ >= now ? readyAt_ : kNoEvent;
+    return in_.arrivalFrom(now);
+  }
   bool holdsWork() const { return current_ >= 0; }
   std::uint64_t culled() const { return culled_; }
 

@@ -27,6 +27,7 @@ class ShadingUnit final : public Unit {
       : Unit(name), p_(p), in_(in), stages_(wires, std::uint64_t(p.latency)) {}
   bool tick(std::uint64_t now);
   std::uint64_t nextEvent() const { return stages_.nextEvent(in_.ready()); }
+  std::uint64_t nextChange(std::uint64_t now) const { return stages_.nextChange(now, in_.nextArrival()); }
   bool holdsWork() const { return stages_.holdsWork(); }
   std::uint64_t delivered() const { return delivered_; }
 

@@ -38,6 +38,12 @@ class TraversalUnit final : public Unit {
                 std::vector<std::uint32_t> storedFloors = {});
   bool tick(std::uint64_t now);
   bool holdsWork() const { return prim_ >= 0; }
+  // Unchanged: stalled on a pipeline's full channel (a receive frees it) or waiting for a
+  // primitive. With the hierarchical Z unit a lookup may happen in any cycle: at once.
+  std::uint64_t nextChange(std::uint64_t now) const {
+    if (hiz_) return now;
+    return prim_ >= 0 ? kNoEvent : in_.arrivalFrom(now);
+  }
 
  private:
   bool nextRow();

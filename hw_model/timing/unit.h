@@ -9,7 +9,16 @@
 //    clock fast-forwards over cycles where nothing happens);
 //  - bool holdsWork() const: true while the unit holds work (in flight or buffered);
 //  - std::uint64_t nextEvent() const: the earliest future cycle at which the unit will act
-//    without new input (Unit::kNoEvent: none; Unit's own nextEvent for a unit that never does).
+//    without new input (Unit::kNoEvent: none; Unit's own nextEvent for a unit that never does);
+//  - std::uint64_t nextChange(std::uint64_t now) const: for a unit whose tick in the cycle
+//    before `now` changed nothing, the first cycle from `now` on at which its tick may do
+//    anything else — change state, or count the cycle differently (busy / stall / idle) —
+//    if no other unit changes anything first (Unit::kNoEvent: never). Never later than
+//    that cycle; earlier is allowed (Unit's own, `now`, says "at once", for units without
+//    it); the clock repeats such a tick over the cycles before it (runMachine);
+//  - TickCounts tickCounts() const and repeatTick(const TickCounts& before, n): what one
+//    tick counts, and that tick repeated n more times (a unit with per-tick state besides its
+//    counters, such as the Z unit's round-robin pointer, advances it too).
 // The clock ticks the units through their concrete types (no virtual call: a tick is
 // inlined into the loop), so the tick bodies the loop runs every cycle are in the headers.
 // Every unit has its own `Params`, derived from the flat configuration (HwConfig) by
@@ -25,12 +34,27 @@
 
 namespace qacc {
 
+// The counters one tick may move without changing the machine's state.
+struct TickCounts {
+  std::uint64_t busy = 0, stall = 0, idle = 0;
+  std::uint64_t extra = 0;  // a unit's own per-tick count (the Z unit's bank conflicts)
+};
+
 class Unit {
  public:
   static constexpr std::uint64_t kNoEvent = std::numeric_limits<std::uint64_t>::max();
   explicit Unit(std::string name) { stats_.name = std::move(name); }
   // A unit that never acts without new input (units that do hide this with their own).
   std::uint64_t nextEvent() const { return kNoEvent; }
+  // A unit that does not know when its tick next differs: at once (no repeated ticks).
+  std::uint64_t nextChange(std::uint64_t now) const { return now; }
+  TickCounts tickCounts() const { return {stats_.busy, stats_.stall, stats_.idle, 0}; }
+  // The tick whose counters moved from `before` to now, repeated n more times.
+  void repeatTick(const TickCounts& before, std::uint64_t n) {
+    stats_.busy += n * (stats_.busy - before.busy);
+    stats_.stall += n * (stats_.stall - before.stall);
+    stats_.idle += n * (stats_.idle - before.idle);
+  }
   // Accounts `n` cycles skipped by fast-forward (nothing moved: busy if holding work).
   void skip(std::uint64_t n, bool holdingWork) {
     if (holdingWork) stats_.busy += n;

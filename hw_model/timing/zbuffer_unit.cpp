@@ -26,4 +26,20 @@ std::uint64_t ZBufferUnit::nextEvent() const {
   return t;
 }
 
+std::uint64_t ZBufferUnit::nextChange(std::uint64_t now) const {
+  std::uint64_t t = kNoEvent;
+  for (const Port& port : ports_) {
+    t = std::min(t, port.reads.nextChange(now, Channel<PointToken>::kNever));
+    const std::uint64_t arrival = port.in->nextArrival();
+    if (arrival == Channel<PointToken>::kNever) continue;
+    if (arrival >= now) {
+      t = std::min(t, arrival);
+    } else {  // arrived: waiting for its bank
+      const PointToken& r = port.in->front();
+      t = std::min(t, std::max(now, bankFree_[std::size_t(bankOf(r.x, r.y))]));
+    }
+  }
+  return t;
+}
+
 }  // namespace qacc

@@ -34,6 +34,19 @@ class ZBufferUnit final : public Unit {
               std::vector<Channel<PointToken>*> in, std::vector<Channel<PointToken>*> out, PixelCounters& px);
   bool tick(std::uint64_t now);
   std::uint64_t nextEvent() const;
+  // Unchanged: a read finishing, a request arriving, or a waiting request's bank freed.
+  std::uint64_t nextChange(std::uint64_t now) const;
+  // The bank conflicts a tick counts, and the round-robin pointer, advance with the ticks.
+  TickCounts tickCounts() const {
+    TickCounts c = Unit::tickCounts();
+    c.extra = conflicts_;
+    return c;
+  }
+  void repeatTick(const TickCounts& before, std::uint64_t n) {
+    Unit::repeatTick(before, n);
+    conflicts_ += n * (conflicts_ - before.extra);
+    rr_ = (rr_ + std::size_t(n % ports_.size())) % ports_.size();
+  }
   bool holdsWork() const { return inFlight_ != 0; }
   std::uint64_t conflicts() const { return conflicts_; }
   // Equal stored depths go to the primitive earlier in scene order (ZBufferMemory::

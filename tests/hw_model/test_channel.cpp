@@ -2,13 +2,16 @@
 // commit, latency, capacity and back-pressure; the loop over the units (engines/machine_run.h).
 #include <gtest/gtest.h>
 
+#include <random>
 #include <vector>
 
+#include "hw_model/config/hw_config.h"
 #include "hw_model/engines/machine_run.h"
 #include "hw_model/timing/channel_registry.h"
 #include "hw_model/timing/pipeline.h"
 #include "hw_model/timing/shading_unit.h"
 #include "hw_model/timing/traversal_unit.h"
+#include "hw_model/timing/zbuffer_unit.h"
 
 using namespace qacc;
 
@@ -172,4 +175,147 @@ TEST(TraversalParams, APipelineCountThatIsNotAPowerOfTwoInterleavesByTheModulo) 
   EXPECT_EQ(three.pipelineOf(5, 0), 2);
   const TraversalUnit::Params four{4};
   EXPECT_EQ(four.pipelineOf(5, 2), 3);
+}
+
+namespace {
+
+// A test source: sends its points in order, point i to port i mod P, each no earlier than its
+// gap after the one before, stalling while that port's channel is full.
+class PointSource final : public Unit {
+ public:
+  PointSource(std::vector<PointToken> points, std::vector<std::uint64_t> gaps, std::vector<Channel<PointToken>*> out)
+      : Unit("source"), points_(std::move(points)), gaps_(std::move(gaps)), out_(std::move(out)) {}
+  bool tick(std::uint64_t now) {
+    if (next_ >= points_.size()) {
+      countIdle();
+      return false;
+    }
+    if (now < sendAt_) {
+      countBusy();
+      return false;
+    }
+    Channel<PointToken>& c = *out_[next_ % out_.size()];
+    if (!c.canSend()) {
+      countStall();
+      return false;
+    }
+    c.send(points_[next_]);
+    ++next_;
+    if (next_ < points_.size()) sendAt_ = now + gaps_[next_];
+    countItem();
+    countBusy();
+    return true;
+  }
+  bool holdsWork() const { return next_ < points_.size(); }
+  std::uint64_t nextEvent() const { return next_ < points_.size() ? sendAt_ : kNoEvent; }
+  std::uint64_t nextChange(std::uint64_t now) const {
+    return next_ < points_.size() && sendAt_ >= now ? sendAt_ : kNoEvent;
+  }
+
+ private:
+  std::vector<PointToken> points_;
+  std::vector<std::uint64_t> gaps_;
+  std::vector<Channel<PointToken>*> out_;
+  std::size_t next_ = 0;
+  std::uint64_t sendAt_ = 0;
+};
+
+// A unit as the clock sees it, but whose tick may differ at any cycle: the clock ticks every
+// cycle the old way (no repeated ticks).
+template <typename U>
+struct EveryCycle {
+  U& u;
+  bool tick(std::uint64_t now) { return u.tick(now); }
+  bool holdsWork() const { return u.holdsWork(); }
+  std::uint64_t nextEvent() const { return u.nextEvent(); }
+  std::uint64_t nextChange(std::uint64_t now) const { return now; }
+  TickCounts tickCounts() const { return u.tickCounts(); }
+  void repeatTick(const TickCounts& before, std::uint64_t n) { u.repeatTick(before, n); }
+  void skip(std::uint64_t n, bool holding) { u.skip(n, holding); }
+  void retractIdle() { u.retractIdle(); }
+};
+
+struct SmallMachineRun {
+  std::uint64_t cycles = 0, fastForwarded = 0, conflicts = 0, delivered = 0;
+  std::vector<UnitStats> units;
+  PixelCounters px;
+};
+
+// source -> P channels -> Z unit -> P channels -> P shading units, ticked with repeated
+// ticks (everyCycle false) or every cycle.
+SmallMachineRun runSmallMachine(std::uint32_t seed, bool everyCycle) {
+  std::mt19937 rng(seed);
+  const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  const int P = pick(1, 3), W = 8, H = 6;
+  HwConfig cfg;
+  cfg.pipelines = P;
+  cfg.zbuffer_banks = pick(1, 4);
+  cfg.zbuffer_bank_busy = pick(1, 4);
+  cfg.zbuffer_read_latency = pick(1, 4);
+  const std::size_t capacity = std::size_t(pick(1, 3));
+  ShadingUnit::Params sp;
+  sp.cycles_per_pixel = pick(1, 6);
+  sp.latency = pick(1, 15);
+  std::vector<PointToken> points;
+  std::vector<std::uint64_t> gaps;
+  for (int i = 0, n = pick(20, 120); i < n; ++i) {
+    points.push_back({i, pick(0, W - 1), pick(0, H - 1), -1, std::int64_t(pick(0, 1000))});
+    gaps.push_back(pick(0, 3) == 0 ? std::uint64_t(pick(0, 40)) : 0);  // some long pauses
+  }
+  ChannelRegistry wires;
+  std::vector<Channel<PointToken>*> toZ, toShading;
+  for (int p = 0; p < P; ++p) {
+    toZ.push_back(&wires.make<PointToken>(capacity));
+    toShading.push_back(&wires.make<PointToken>(capacity));
+  }
+  ZBufferMemory zb(W, H);
+  PixelCounters px;
+  PointSource source(points, gaps, toZ);
+  ZBufferUnit z(ZBufferUnit::Params::from(cfg), cfg, wires, zb, toZ, toShading, px);
+  std::vector<ShadingUnit> shading;
+  shading.reserve(std::size_t(P));
+  for (int p = 0; p < P; ++p) shading.emplace_back("shading", sp, wires, *toShading[std::size_t(p)]);
+  SmallMachineRun r;
+  if (everyCycle) {
+    EveryCycle<PointSource> s{source};
+    EveryCycle<ZBufferUnit> zz{z};
+    std::vector<EveryCycle<ShadingUnit>> sh;
+    for (ShadingUnit& u : shading) sh.push_back({u});
+    r.cycles = runMachine(wires, r.fastForwarded, s, zz, sh);
+  } else {
+    r.cycles = runMachine(wires, r.fastForwarded, source, z, shading);
+  }
+  appendUnitStats(r.units, source, z, shading);
+  r.conflicts = z.conflicts();
+  for (const ShadingUnit& u : shading) r.delivered += u.delivered();
+  r.px = px;
+  return r;
+}
+
+}  // namespace
+
+TEST(MachineRun, RepeatedTicksCountWhatTickingEveryCycleCounts) {
+  // Cycles where nothing moves but a unit waits on a full channel are repeated from one
+  // tick (Unit::nextChange, repeatTick): every counter must be what ticking each of them
+  // gives — cycles, fast-forwarded cycles, busy / stall / idle / items of every unit, the
+  // Z unit's bank conflicts (its round-robin pointer decides which port waits), the pixels.
+  int repeatedSomewhere = 0;
+  for (std::uint32_t seed = 1; seed <= 300; ++seed) {
+    const SmallMachineRun a = runSmallMachine(seed, false), b = runSmallMachine(seed, true);
+    ASSERT_EQ(a.cycles, b.cycles) << "seed " << seed;
+    EXPECT_EQ(a.fastForwarded, b.fastForwarded) << "seed " << seed;
+    EXPECT_EQ(a.conflicts, b.conflicts) << "seed " << seed;
+    EXPECT_EQ(a.delivered, b.delivered) << "seed " << seed;
+    EXPECT_EQ(a.px.written, b.px.written) << "seed " << seed;
+    EXPECT_EQ(a.px.depth_rejected, b.px.depth_rejected) << "seed " << seed;
+    ASSERT_EQ(a.units.size(), b.units.size());
+    for (std::size_t i = 0; i < a.units.size(); ++i) {
+      EXPECT_EQ(a.units[i].busy, b.units[i].busy) << "seed " << seed << ", unit " << a.units[i].name;
+      EXPECT_EQ(a.units[i].stall, b.units[i].stall) << "seed " << seed << ", unit " << a.units[i].name;
+      EXPECT_EQ(a.units[i].idle, b.units[i].idle) << "seed " << seed << ", unit " << a.units[i].name;
+      EXPECT_EQ(a.units[i].items, b.units[i].items) << "seed " << seed << ", unit " << a.units[i].name;
+    }
+    repeatedSomewhere += a.units[0].stall > 20;  // the source stalled long enough to repeat ticks
+  }
+  EXPECT_GT(repeatedSomewhere, 50) << "the random machines must exercise the repeated ticks";
 }
