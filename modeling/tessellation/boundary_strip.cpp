@@ -324,17 +324,16 @@ struct Strip {
       // The triangles using each edge, in triangle order: the (edge, triangle) pairs sorted
       // stably by edge, an edge's run found by binary search (what a std::map of vectors
       // gives, without an allocation per edge).
-      std::vector<std::pair<EdgeKey, std::size_t>> uses;
+      using EdgeUse = std::pair<EdgeKey, std::size_t>;  // an edge and a triangle using it
+      std::vector<EdgeUse> uses;
       uses.reserve(3 * out.triangles.size());
       for (std::size_t t = 0; t < out.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k) uses.emplace_back(edgeKey(at(t, k), at(t, (k + 1) % 3)), t);
-      const auto byEdge = [](const std::pair<EdgeKey, std::size_t>& x, const std::pair<EdgeKey, std::size_t>& y) {
-        return EdgeLess{}(x.first, y.first);
-      };
+      const auto byEdge = [](const EdgeUse& x, const EdgeUse& y) { return EdgeLess{}(x.first, y.first); };
       std::stable_sort(uses.begin(), uses.end(), byEdge);
       // The triangles of edge e: at most the first two, and how many there are.
       const auto usesOf = [&](const EdgeKey& e, std::size_t ts[2]) {
-        const auto range = std::equal_range(uses.begin(), uses.end(), std::pair<EdgeKey, std::size_t>{e, 0}, byEdge);
+        const auto range = std::equal_range(uses.begin(), uses.end(), EdgeUse{e, 0}, byEdge);
         const std::size_t n = std::size_t(range.second - range.first);
         for (std::size_t i = 0; i < std::min<std::size_t>(n, 2); ++i) ts[i] = range.first[std::ptrdiff_t(i)].second;
         return n;
@@ -377,9 +376,8 @@ struct Strip {
       if (mid.empty() && centre.empty()) break;
       TriangleMesh3 next;
       std::swap(next, out);
-      std::vector<double> previous(next.triangles.size(), unmeasured);
+      std::vector<double> previous;  // next's measured excesses; measured is out's, refilled by emit
       std::swap(previous, measured);
-      measured.clear();
       for (std::size_t t = 0; t < next.triangles.size(); ++t) {
         const Vector3d v[3] = {next.positions[std::size_t(next.triangles[t][0])],
                                next.positions[std::size_t(next.triangles[t][1])],
