@@ -1,11 +1,20 @@
 // qacc command line (design §7): render, batch, info and the commands registered in
 // tools/commands.h. Errors print one line "qacc: error: ..." and exit with status 1.
+#include <malloc.h>
+
 #include <cstdio>
 #include <exception>
 
 #include "tools/cli/commands.h"
 
 int main(int argc, char** argv) {
+  // The process keeps the memory it frees: glibc maps no block on its own (a freed mapping
+  // goes back to the kernel) and never trims the heap. So the second and later frames of
+  // bench, batch and sweep reuse pages already touched, where they took fresh pages the
+  // kernel zeroed first (docs/PERFORMANCE.md "Freed memory kept"); every engine's frame is
+  // timed in that same state. Peak memory is unchanged: it is what the largest frame needs.
+  mallopt(M_MMAP_MAX, 0);
+  mallopt(M_TRIM_THRESHOLD, -1);
   CLI::App app{"qacc - emulator of the LIFL quadric display accelerator"};
   app.require_subcommand(1);
   qacc::addRenderCommand(app);
