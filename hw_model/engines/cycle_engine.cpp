@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -41,11 +42,11 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
       if (csg.treeOf(std::size_t(s.index)) >= 0) s.visible = false;
   }
   const std::vector<PrimitiveSetup>& timedSetups = csg.trees.empty() ? fs.setups : timedCopy.setups;
-  // So is the pixel arithmetic (functional-first, timing-directed: pixel_trace.h).
+  // So is the pixel arithmetic (functional-first, timing-directed: pixel_trace.h): the rows'
+  // spans first, then every pixel, by the other threads while this one runs the timing loop
+  // (below), or before it on one thread.
   const auto tr0 = std::chrono::steady_clock::now();
-  const PixelTrace trace = PixelTrace::build(timedSetups, cfg, nt);
-  st.trace_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count();
-  st.overflow.add(trace.overflow);
+  PixelTrace trace = PixelTrace::plan(timedSetups, nt);
   st.primitives = fs.setups.size();
   for (const PrimitiveSetup& s : fs.setups) {
     st.visible_primitives += s.visible;
@@ -95,11 +96,43 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
     shading.emplace_back("shading_" + std::to_string(p), ShadingUnit::Params::from(cfg), wires, *toShading[p]);
 
   // The tick order within a cycle: the hierarchical Z unit ticks after traversal (its
-  // lookups count as busy).
-  const auto loop0 = std::chrono::steady_clock::now();
-  runMachine(wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz, shading);
+  // lookups count as busy). With more than one thread, thread 0 runs the loop while the
+  // others fill the trace ahead of it (the traversal unit waits for a primitive not yet
+  // filled); the loop's time is its wall time less those waits. The trace's time is from
+  // the planning to the last pixel filled, so with threads the two overlap.
+  double loopSeconds = 0, traceDone = 0;
+  std::exception_ptr loopError;
+  const auto runLoop = [&] {
+    const auto loop0 = std::chrono::steady_clock::now();
+    try {
+      runMachine(wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz, shading);
+    } catch (...) {
+      loopError = std::current_exception();
+    }
+    loopSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0).count();
+  };
+  const auto sinceTrace = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count(); };
+#pragma omp parallel num_threads(nt)
+  {
+    // A team of one (no thread to spare) fills the trace first, then runs the loop.
+    if (omp_get_num_threads() == 1) {
+      trace.fillAhead(timedSetups, cfg);
+      traceDone = sinceTrace();
+      runLoop();
+    } else if (omp_get_thread_num() == 0) {
+      runLoop();
+    } else {
+      trace.fillAhead(timedSetups, cfg);
+#pragma omp critical(qacc_trace_done)
+      traceDone = std::max(traceDone, sinceTrace());
+    }
+  }
+  if (loopError) std::rethrow_exception(loopError);
+  trace.finishFill();
+  st.overflow.add(trace.overflow);
+  st.trace_seconds = traceDone;
   st.cycles = wires.now();
-  st.loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0).count();
+  st.loop_seconds = loopSeconds - trace.waitSeconds();
   appendUnitStats(st.units, host, setup, traversal, pipelines, zunit, hiz, shading);
   if (hizUnit) {
     st.hiz = hizUnit->counters;

@@ -1,7 +1,9 @@
 // PixelTrace: the pixel pipelines' datapath results for every pixel the traversal issues,
 // per primitive in traversal order (rows top to bottom, spans left to right), computed by
 // the shared PixelDatapath arithmetic (forward differences along each span, exactly the
-// functional engine's code) in parallel before the cycle-level timing loop runs.
+// functional engine's code). The rows' spans are solved first, in parallel; the pixels are
+// then filled by the other threads while the cycle-level timing loop runs on one (its
+// traversal unit waits for a primitive not yet filled), or before the loop on one thread.
 //
 // The cycle engine is functional-first, timing-directed: the arithmetic of a pixel does
 // not depend on when it is computed, only on the primitive and the pixel, so it is done
@@ -10,7 +12,9 @@
 // banks and latencies cycle by cycle. What depends on timing and order — the Z test
 // against the banked buffer, what reaches shading, stalls — is simulated in the loop.
 #pragma once
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <type_traits>
 #include <vector>
 
@@ -27,6 +31,8 @@ namespace qacc {
 // pixel, first touching the pages in the threads that fill them. 8 bytes (bit-fields): the
 // clip passes, the same for every pixel of a primitive, are kept per primitive
 // (PixelTrace::clipPasses), so molecule's trace at 1920x1080 takes 10 MB, not 20.
+class PixelDatapath;
+
 struct TracedPixel {
   std::int64_t z : 46;    // depth, internal format (0 <= z <= 2^depth_frac_bits <= 2^36)
   std::int64_t cap : 16;  // cap plane, -1 for a surface point (a plane index below 2^15, as the datapath's)
@@ -55,7 +61,40 @@ struct PixelTrace {
   const TracedPixel& pixel(int prim, int k) const { return pixels[first[std::size_t(prim)] + std::size_t(k)]; }
   // The clip-unit passes of each of primitive `prim`'s pixels.
   int clipPasses(int prim) const { return passes[std::size_t(prim)]; }
+
+  // The whole trace: plan, then fill every primitive (threads in parallel).
   static PixelTrace build(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads);
+
+  // In two steps, so that other threads can fill the pixels while the timing loop reads them
+  // (cycle_engine.cpp): plan() solves every row's spans and sizes the block (pixels not
+  // touched); fillAhead() is then called by each filling thread, which takes the primitives in
+  // order until none is left, and publishes each one filled; the reader calls
+  // awaitPrimitive(prim) before it reads a primitive's pixels or clip passes (the traversal
+  // unit, as it takes the primitive: a wait of the host, not a modeled cycle). finishFill()
+  // adds the fillers' overflow counters, after they are done. A trace that is only planned,
+  // then filled by fillAhead from one thread before the loop, is the same trace.
+  static PixelTrace plan(const std::vector<PrimitiveSetup>& setups, int threads);
+  void fillAhead(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg);
+  void finishFill();
+  void awaitPrimitive(int prim) const {
+    if (fill_ && !fill_->ready[std::size_t(prim)].load(std::memory_order_acquire)) waitFor(prim);
+  }
+  // The wall time awaitPrimitive spent waiting (the reader's thread), seconds.
+  double waitSeconds() const { return fill_ ? fill_->waitSeconds : 0.0; }
+
+ private:
+  struct Fill {  // the state of a fill in progress (shared by the fillers and the reader)
+    explicit Fill(std::size_t n) : ready(new std::atomic<bool>[n]), overflow(n) {
+      for (std::size_t i = 0; i < n; ++i) ready[i].store(false, std::memory_order_relaxed);
+    }
+    std::unique_ptr<std::atomic<bool>[]> ready;  // primitive i filled and published
+    std::atomic<std::size_t> next{0};             // the next primitive a filler takes
+    std::vector<OverflowCounters> overflow;       // per primitive (summed in order: any thread count)
+    double waitSeconds = 0;                       // the reader's
+  };
+  void fillPrimitive(std::size_t i, const PrimitiveSetup& s, PixelDatapath& pp, OverflowCounters& ovf);
+  void waitFor(int prim) const;
+  std::unique_ptr<Fill> fill_;
 };
 
 }  // namespace qacc

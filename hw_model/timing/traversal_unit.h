@@ -85,6 +85,7 @@ inline bool TraversalUnit::tick(std::uint64_t now) {
   bool changed = false;
   if (prim_ < 0 && in_.ready()) {
     prim_ = in_.front();
+    trace_.awaitPrimitive(prim_);  // the host's wait for its pixels, when filled ahead (no modeled cycle)
     in_.receive();
     countItem();
     changed = true;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <thread>
 
 #include "hw_model/datapath/pixel_datapath.h"
 #include "hw_model/engines/frame_setup.h"
@@ -21,14 +22,19 @@ void expectSame(const TracedPixel& a, const TracedPixel& b) {
   EXPECT_EQ(a.candidate, b.candidate);
 }
 
+// The setups of a shipped scene at w x h, default configuration.
+FrameSetup setupsOf(const std::string& name, int w, int h) {
+  Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/" + name + ".json");
+  scene.width = w;
+  scene.height = h;
+  return FrameSetup::build(scene, HwConfig(), 2);
+}
+
 }  // namespace
 
 TEST(PixelTrace, OneBlockInTraversalOrder) {
-  Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/sphereflake.json");
-  scene.width = 160;
-  scene.height = 120;
   const HwConfig cfg;
-  const FrameSetup fs = FrameSetup::build(scene, cfg, 2);
+  const FrameSetup fs = setupsOf("sphereflake", 160, 120);
   const PixelTrace tr = PixelTrace::build(fs.setups, cfg, 2);
   const std::size_t n = fs.setups.size();
   ASSERT_EQ(tr.first.size(), n + 1);
@@ -72,4 +78,31 @@ TEST(PixelTrace, OneBlockInTraversalOrder) {
   EXPECT_EQ(one.first, tr.first);
   EXPECT_EQ(one.passes, tr.passes);
   for (std::size_t p = 0; p < tr.pixels.size(); ++p) expectSame(one.pixels[p], tr.pixels[p]);
+}
+
+// Filled ahead: threads fill the planned trace while a reader takes the primitives in order,
+// waiting for each (awaitPrimitive) as the traversal unit does; the trace it reads is the
+// whole trace, and the same as build's.
+TEST(PixelTrace, FilledAheadWhileReadEqualsTheWholeTrace) {
+  const HwConfig cfg;
+  const FrameSetup fs = setupsOf("molecule", 320, 240);
+  const PixelTrace whole = PixelTrace::build(fs.setups, cfg, 1);
+  for (int fillers : {1, 3}) {
+    PixelTrace tr = PixelTrace::plan(fs.setups, 2);
+    EXPECT_EQ(tr.first, whole.first);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < fillers; ++t) threads.emplace_back([&] { tr.fillAhead(fs.setups, cfg); });
+    std::size_t compared = 0;
+    for (std::size_t i = 0; i < fs.setups.size(); ++i) {
+      tr.awaitPrimitive(int(i));
+      EXPECT_EQ(tr.clipPasses(int(i)), whole.clipPasses(int(i))) << "primitive " << i;
+      for (std::size_t p = whole.first[i]; p < whole.first[i + 1]; ++p, ++compared) expectSame(tr.pixels[p], whole.pixels[p]);
+    }
+    for (std::thread& t : threads) t.join();
+    tr.finishFill();
+    EXPECT_EQ(compared, whole.pixels.size());
+    EXPECT_GT(compared, 10000u);
+    EXPECT_EQ(tr.overflow.total(), whole.overflow.total());
+    EXPECT_GE(tr.waitSeconds(), 0.0);
+  }
 }
