@@ -98,10 +98,13 @@ def report(d, res, plots):
         if ans.get("point") is None:
             w("<p>Target <code>%s</code>: %s.</p>" % (html.escape(ans["target"]), html.escape(ans.get("note", ""))))
         else:
+            p = ans.get("worst_psnr_db")
+            psnr = ("lowest PSNR %.1f dB" % p if isinstance(p, (int, float))
+                    else "every image identical to the reference" if p == "inf" else "PSNR not measured")
             w("<p>Target <code>%s</code> on every scene: the cheapest point is <b>%d (%s)</b>, <b>%.1f kGE</b>, "
-              "worst scene %.4f %% wrong, %d cycles over all scenes.</p>" %
+              "worst scene %.4f %% wrong, %s, %d cycles over all scenes.</p>" %
               (html.escape(ans["target"]), ans["point"], html.escape(ans["label"]), ans["gates_kge"],
-               ans["worst_wrong_percent"], ans["cycles"]))
+               ans["worst_wrong_percent"], psnr, ans["cycles"]))
     w("<h2>Plots</h2>")
     for p in plots:
         w("<p><a href='%s.svg'><img src='%s.png' alt='%s'></a></p>" % (p, p, p))

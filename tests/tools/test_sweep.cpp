@@ -3,6 +3,8 @@
 // sweep; and the command line's refusals of flags an engine does not read.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -145,6 +147,15 @@ TEST(Sweep, ShardsThroughGnuParallelMergeToTheUnshardedRun) {
   EXPECT_EQ(a["rows"].size(), 8u);  // 4 points (one refused) x 2 scenes
   EXPECT_EQ(comparable(a["rows"]), comparable(b["rows"]));
   EXPECT_EQ(a["fronts"], b["fronts"]);
+  // The answer gives its point's lowest PSNR beside the target's wrong pixels, as printed.
+  const nlohmann::json& ans = a["fronts"]["answer"];
+  ASSERT_TRUE(ans["point"].is_number()) << ans.dump();
+  double lowest = INFINITY;
+  for (const auto& row : a["rows"])
+    if (row["point"] == ans["point"] && row["psnr_db"].is_number()) lowest = std::min(lowest, row["psnr_db"].get<double>());
+  if (std::isinf(lowest)) EXPECT_EQ(ans["worst_psnr_db"], "inf");
+  else EXPECT_DOUBLE_EQ(ans["worst_psnr_db"].get<double>(), lowest);
+  EXPECT_NE(whole.out.find("PSNR"), std::string::npos) << whole.out;
   // A missing shard is refused.
   qacc::CommandRun partial = run(qaccExe() + " sweep --merge " + (d / "part1").string() + " " + (d / "part2").string() + " --out " +
                     (d / "bad").string() + " --no-report");
