@@ -46,7 +46,7 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
   // spans first, then every pixel, by the other threads while this one runs the timing loop
   // (below), or before it on one thread.
   const auto tr0 = std::chrono::steady_clock::now();
-  PixelTrace trace = PixelTrace::plan(timedSetups, nt);
+  PixelTrace trace = PixelTrace::plan(timedSetups, cfg, nt);
   st.primitives = fs.setups.size();
   for (const PrimitiveSetup& s : fs.setups) {
     st.visible_primitives += s.visible;
@@ -116,13 +116,13 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
   {
     // A team of one (no thread to spare) fills the trace first, then runs the loop.
     if (omp_get_num_threads() == 1) {
-      trace.fillAhead(timedSetups, cfg);
+      trace.fillAhead();
       traceDone = sinceTrace();
       runLoop();
     } else if (omp_get_thread_num() == 0) {
       runLoop();
     } else {
-      trace.fillAhead(timedSetups, cfg);
+      trace.fillAhead();
 #pragma omp critical(qacc_trace_done)
       traceDone = std::max(traceDone, sinceTrace());
     }

@@ -10,7 +10,14 @@
 
 namespace qacc {
 
-PixelTrace PixelTrace::plan(const std::vector<PrimitiveSetup>& setups, int threads) {
+PixelTrace::Fill::Fill(PixelTrace& tr, const std::vector<PrimitiveSetup>& s, const HwConfig& c)
+    : setups(s), cfg(c), pixels(tr.pixels.data()), first(tr.first.data()), rows(tr.rows.data()),
+      passes(tr.passes.data()), ready(new std::atomic<bool>[s.size()]), overflow(s.size()) {
+  for (std::size_t i = 0; i < s.size(); ++i) ready[i].store(false, std::memory_order_relaxed);
+}
+PixelTrace::Fill::~Fill() = default;
+
+PixelTrace PixelTrace::plan(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads) {
   PixelTrace tr;
   const int n = int(setups.size());
   tr.rows.resize(std::size_t(n));
@@ -36,16 +43,17 @@ PixelTrace PixelTrace::plan(const std::vector<PrimitiveSetup>& setups, int threa
   }
   for (std::size_t i = 0; i < std::size_t(n); ++i) tr.first[i + 1] += tr.first[i];
   tr.pixels.resize(tr.first.back());
-  tr.fill_ = std::make_unique<Fill>(std::size_t(n));
+  tr.fill_ = std::make_unique<Fill>(tr, setups, cfg);
   return tr;
 }
 
 // The datapath along primitive i's spans, in pieces of up to kChunk pixels.
-void PixelTrace::fillPrimitive(std::size_t i, const PrimitiveSetup& s, PixelDatapath& pp, OverflowCounters& ovf) {
+void PixelTrace::Fill::fillPrimitive(std::size_t i, PixelDatapath& pp) {
+  const PrimitiveSetup& s = setups[i];
   if (!s.visible) return;
   constexpr int kChunk = 64;
   PixelOutcome outcomes[kChunk];
-  TracedPixel* out = pixels.data() + first[i];
+  TracedPixel* out = pixels + first[i];
   pp.load(s);
   passes[i] = pp.clipPasses();
   for (const RowSpans& r : rows[i]) {
@@ -54,7 +62,7 @@ void PixelTrace::fillPrimitive(std::size_t i, const PrimitiveSetup& s, PixelData
     for (int k = 0; k < r.n; ++k)
       for (int xa = sp[k].x0; xa < sp[k].x1; xa += kChunk) {
         const int m = std::min(kChunk, sp[k].x1 - xa);
-        pp.evaluateSpan(xa - s.x0, y - s.y0, m, outcomes, ovf);
+        pp.evaluateSpan(xa - s.x0, y - s.y0, m, outcomes, overflow[i]);
         for (int j = 0; j < m; ++j) {
           const PixelOutcome& o = outcomes[j];
           TracedPixel& t = *out++;
@@ -67,14 +75,17 @@ void PixelTrace::fillPrimitive(std::size_t i, const PrimitiveSetup& s, PixelData
   }
 }
 
-void PixelTrace::fillAhead(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg) {
-  PixelDatapath pp(cfg);  // one per filling thread, loaded with each primitive it takes
-  Fill& f = *fill_;
-  for (;;) {
-    const std::size_t i = f.next.fetch_add(1, std::memory_order_relaxed);
-    if (i >= setups.size()) return;
-    fillPrimitive(i, setups[i], pp, f.overflow[i]);
-    f.ready[i].store(true, std::memory_order_release);
+bool PixelTrace::Fill::fillNext(PixelDatapath& pp) {
+  const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
+  if (i >= setups.size()) return false;
+  fillPrimitive(i, pp);
+  ready[i].store(true, std::memory_order_release);
+  return true;
+}
+
+void PixelTrace::fillAhead() {
+  PixelDatapath pp(fill_->cfg);  // one per filling thread, loaded with each primitive it takes
+  while (fill_->fillNext(pp)) {
   }
 }
 
@@ -84,15 +95,20 @@ void PixelTrace::finishFill() {
 
 void PixelTrace::waitFor(int prim) const {
   const auto t0 = std::chrono::steady_clock::now();
-  while (!fill_->ready[std::size_t(prim)].load(std::memory_order_acquire)) std::this_thread::yield();
-  fill_->waitSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Fill& f = *fill_;
+  // Fill the primitives no filler has taken yet (the fillers may be behind the loop); once
+  // every primitive is taken, wait for the one being filled.
+  if (!f.readerDatapath) f.readerDatapath = std::make_unique<PixelDatapath>(f.cfg);
+  while (!f.ready[std::size_t(prim)].load(std::memory_order_acquire))
+    if (!f.fillNext(*f.readerDatapath)) std::this_thread::yield();
+  f.waitSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 PixelTrace PixelTrace::build(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads) {
-  PixelTrace tr = plan(setups, threads);
+  PixelTrace tr = plan(setups, cfg, threads);
   const int nt = threads > 0 ? threads : omp_get_max_threads();
 #pragma omp parallel num_threads(nt)
-  tr.fillAhead(setups, cfg);
+  tr.fillAhead();
   tr.finishFill();
   return tr;
 }

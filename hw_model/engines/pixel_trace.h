@@ -26,9 +26,9 @@
 
 namespace qacc {
 
-// Trivially constructible, without default values: PixelTrace::build sizes the trace
-// without touching it (UninitVector) and its parallel pass writes every field of every
-// pixel, first touching the pages in the threads that fill them. 8 bytes (bit-fields): the
+// Trivially constructible, without default values: PixelTrace::plan sizes the trace
+// without touching it (UninitVector) and fillAhead writes every field of every pixel,
+// first touching the pages in the threads that fill them. 8 bytes (bit-fields): the
 // clip passes, the same for every pixel of a primitive, are kept per primitive
 // (PixelTrace::clipPasses), so molecule's trace at 1920x1080 takes 10 MB, not 20.
 class PixelDatapath;
@@ -49,9 +49,10 @@ struct RowSpans {  // a row of a primitive with at least one span
 
 struct PixelTrace {
   // Every primitive's pixels in one buffer (primitive i's are [first[i], first[i + 1]), in
-  // traversal order), so that the trace — tens of megabytes at 1920x1080 — is one block,
-  // returned whole to the system when the trace is released (and, like a frame buffer,
-  // backed by huge pages where the system offers them: raster/image/default_init_allocator.h).
+  // traversal order), so that the trace — tens of megabytes at 1920x1080 — is one block of
+  // the main thread's heap, reused whole by the frame buffer when the trace is released (and,
+  // like a frame buffer, backed by huge pages where the system offers them:
+  // raster/image/default_init_allocator.h).
   UninitVector<TracedPixel> pixels;
   std::vector<std::size_t> first;           // indexed by primitive, one past the last at the end
   std::vector<std::vector<RowSpans>> rows;  // indexed by primitive: its non-empty rows
@@ -67,32 +68,46 @@ struct PixelTrace {
 
   // In two steps, so that other threads can fill the pixels while the timing loop reads them
   // (cycle_engine.cpp): plan() solves every row's spans and sizes the block (pixels not
-  // touched); fillAhead() is then called by each filling thread, which takes the primitives in
-  // order until none is left, and publishes each one filled; the reader calls
-  // awaitPrimitive(prim) before it reads a primitive's pixels or clip passes (the traversal
-  // unit, as it takes the primitive: a wait of the host, not a modeled cycle). finishFill()
-  // adds the fillers' overflow counters, after they are done. A trace that is only planned,
-  // then filled by fillAhead from one thread before the loop, is the same trace.
-  static PixelTrace plan(const std::vector<PrimitiveSetup>& setups, int threads);
-  void fillAhead(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg);
+  // touched; `setups` and `cfg` must outlive the fill); fillAhead() is then called by each
+  // filling thread, which takes the primitives in order until none is left, and publishes
+  // each one filled; the reader calls awaitPrimitive(prim) before it reads a primitive's
+  // pixels or clip passes (the traversal unit, as it takes the primitive: a wait of the host,
+  // not a modeled cycle), and while it waits it fills the next primitives no filler has taken,
+  // so that a fill slower than the loop still runs on every thread. finishFill() adds the
+  // overflow counters, after every filler is done. A trace that is only planned, then filled
+  // by fillAhead from one thread before the loop, is the same trace.
+  static PixelTrace plan(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads);
+  void fillAhead();
   void finishFill();
   void awaitPrimitive(int prim) const {
     if (fill_ && !fill_->ready[std::size_t(prim)].load(std::memory_order_acquire)) waitFor(prim);
   }
-  // The wall time awaitPrimitive spent waiting (the reader's thread), seconds.
+  // The wall time awaitPrimitive spent waiting or filling (the reader's thread), seconds.
   double waitSeconds() const { return fill_ ? fill_->waitSeconds : 0.0; }
 
  private:
-  struct Fill {  // the state of a fill in progress (shared by the fillers and the reader)
-    explicit Fill(std::size_t n) : ready(new std::atomic<bool>[n]), overflow(n) {
-      for (std::size_t i = 0; i < n; ++i) ready[i].store(false, std::memory_order_relaxed);
-    }
+  // The state of a fill in progress, shared by the fillers and the reader. It reaches the
+  // trace's arrays through their buffers, which plan() has sized for good (a PixelTrace
+  // moved after plan() keeps them), so that the reader's const trace can fill while it waits.
+  struct Fill {
+    Fill(PixelTrace& tr, const std::vector<PrimitiveSetup>& s, const HwConfig& c);
+    ~Fill();
+    // Takes the next primitive no thread has taken, fills and publishes it; false when none is left.
+    bool fillNext(PixelDatapath& pp);
+    // The datapath along primitive i's spans.
+    void fillPrimitive(std::size_t i, PixelDatapath& pp);
+    const std::vector<PrimitiveSetup>& setups;
+    const HwConfig& cfg;
+    TracedPixel* const pixels;
+    const std::size_t* const first;
+    const std::vector<RowSpans>* const rows;
+    int* const passes;
     std::unique_ptr<std::atomic<bool>[]> ready;  // primitive i filled and published
     std::atomic<std::size_t> next{0};             // the next primitive a filler takes
     std::vector<OverflowCounters> overflow;       // per primitive (summed in order: any thread count)
     double waitSeconds = 0;                       // the reader's
+    std::unique_ptr<PixelDatapath> readerDatapath;  // the reader's, when it fills while it waits
   };
-  void fillPrimitive(std::size_t i, const PrimitiveSetup& s, PixelDatapath& pp, OverflowCounters& ovf);
   void waitFor(int prim) const;
   std::unique_ptr<Fill> fill_;
 };

@@ -74,8 +74,9 @@ struct HwStats {
   std::vector<UnitStats> units;
   double clock_mhz = 0;
   double host_seconds = 0;           // wall time of the render
-  double loop_seconds = 0;           // hw-cycle: wall time of the timing loop alone (one core)
-  double trace_seconds = 0;          // hw-cycle: wall time of the pixel datapath pass (pixel_trace.h)
+  double loop_seconds = 0;           // hw-cycle: wall time of the timing loop alone (one core; less its waits for the trace)
+  double trace_seconds = 0;          // hw-cycle: wall time of the pixel datapath pass (pixel_trace.h), from planning to
+                                     // the last pixel filled (with threads, beside the loop: the two overlap)
 
   CostModel cost;                    // silicon cost of the configuration
   SceneNeeds needs;                  // the units the scene uses (priceNeeds)

@@ -81,17 +81,18 @@ TEST(PixelTrace, OneBlockInTraversalOrder) {
 }
 
 // Filled ahead: threads fill the planned trace while a reader takes the primitives in order,
-// waiting for each (awaitPrimitive) as the traversal unit does; the trace it reads is the
-// whole trace, and the same as build's.
+// waiting for each (awaitPrimitive) as the traversal unit does, and filling those no thread
+// has taken yet (all of them with no filler); the trace it reads is the whole trace, and the
+// same as build's.
 TEST(PixelTrace, FilledAheadWhileReadEqualsTheWholeTrace) {
   const HwConfig cfg;
   const FrameSetup fs = setupsOf("molecule", 320, 240);
   const PixelTrace whole = PixelTrace::build(fs.setups, cfg, 1);
-  for (int fillers : {1, 3}) {
-    PixelTrace tr = PixelTrace::plan(fs.setups, 2);
+  for (int fillers : {0, 1, 3}) {
+    PixelTrace tr = PixelTrace::plan(fs.setups, cfg, 2);
     EXPECT_EQ(tr.first, whole.first);
     std::vector<std::thread> threads;
-    for (int t = 0; t < fillers; ++t) threads.emplace_back([&] { tr.fillAhead(fs.setups, cfg); });
+    for (int t = 0; t < fillers; ++t) threads.emplace_back([&] { tr.fillAhead(); });
     std::size_t compared = 0;
     for (std::size_t i = 0; i < fs.setups.size(); ++i) {
       tr.awaitPrimitive(int(i));

@@ -1,6 +1,8 @@
 // qacc command line (design §7): render, batch, info and the commands registered in
 // tools/commands.h. Errors print one line "qacc: error: ..." and exit with status 1.
+#ifdef __GLIBC__
 #include <malloc.h>
+#endif
 
 #include <cstdio>
 #include <exception>
@@ -8,13 +10,17 @@
 #include "tools/cli/commands.h"
 
 int main(int argc, char** argv) {
-  // The process keeps the memory it frees: glibc maps no block on its own (a freed mapping
-  // goes back to the kernel) and never trims the heap. So the second and later frames of
-  // bench, batch and sweep reuse pages already touched, where they took fresh pages the
-  // kernel zeroed first (docs/PERFORMANCE.md "Freed memory kept"); every engine's frame is
-  // timed in that same state. Peak memory is unchanged: it is what the largest frame needs.
+#ifdef __GLIBC__
+  // The main thread's heap keeps the memory it frees: glibc maps no block on its own (a freed
+  // mapping goes back to the kernel) and never trims the heap. So the second and later frames
+  // of bench, batch and sweep reuse the frame-sized buffers' pages already touched, where they
+  // took fresh pages the kernel zeroed first (docs/PERFORMANCE.md "Freed memory kept"); every
+  // engine's frame is timed in that same state. Worker threads' arenas keep glibc's own rules
+  // (a block larger than an arena's heap is still mapped). The price: a freed block no later
+  // one fits stays in the heap, so a single render's peak is a few MB higher (PERFORMANCE.md).
   mallopt(M_MMAP_MAX, 0);
   mallopt(M_TRIM_THRESHOLD, -1);
+#endif
   CLI::App app{"qacc - emulator of the LIFL quadric display accelerator"};
   app.require_subcommand(1);
   qacc::addRenderCommand(app);

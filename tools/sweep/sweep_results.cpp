@@ -92,7 +92,9 @@ nlohmann::ordered_json sweepFronts(const SweepResults& r) {
     a.wrong = std::max(a.wrong, num(row, "wrong_percent"));
     a.pinholes += num(row, "pinholes");
     a.cycles += num(row, "cycles");
-    a.psnr = std::min(a.psnr, num(row, "psnr_db"));
+    // The lowest PSNR over the scenes; one scene without it makes the point's unknown (NaN).
+    const double psnr = num(row, "psnr_db");
+    a.psnr = std::isnan(psnr) || std::isnan(a.psnr) ? std::nan("") : std::min(a.psnr, psnr);
     a.gates = num(row, "gates_kge");
     if (!target.empty() && !target.meets(row)) a.meets = false;
   }
