@@ -59,6 +59,9 @@ std::uint64_t runMachine(ChannelRegistry& wires, std::uint64_t& fastForwarded, G
   // empty. That state can only be entered by a cycle where something changed, and the
   // cycle after it changes nothing, so the check runs only on unchanged cycles: ending
   // there, the frame took one cycle less than the loop ran.
+  // The unchanged cycles in a row the clock ticks or repeats (a fast-forward jump counts as
+  // one) before it reports a deadlock.
+  constexpr std::uint64_t kDeadlockCycles = 1000000;
   std::uint64_t quiet = 0;
   bool prevChanged = false;
   // Repeated ticks: when armed (repeatUntil != 0), this cycle's tick is counted and repeated
@@ -99,7 +102,7 @@ std::uint64_t runMachine(ChannelRegistry& wires, std::uint64_t& fastForwarded, G
           if (t < next) next = t;
         },
         groups...);
-    if (next == Unit::kNoEvent || ++quiet > 1000000) machine_run_detail::throwDeadlock(wires.now());
+    if (next == Unit::kNoEvent || ++quiet > kDeadlockCycles) machine_run_detail::throwDeadlock(wires.now());
     if (next > wires.now()) {
       const std::uint64_t skip = next - wires.now();
       forEachUnit([&](auto& u) { u.skip(skip, u.holdsWork()); }, groups...);
@@ -111,7 +114,7 @@ std::uint64_t runMachine(ChannelRegistry& wires, std::uint64_t& fastForwarded, G
     if (armed) {
       // Cycles wires.now() .. repeatUntil - 1 would tick as this one did (none past the
       // deadlock limit of unchanged cycles, so a deadlock is reported at the same cycle).
-      const std::uint64_t n = std::min(repeatUntil - wires.now(), std::uint64_t(1000000) - quiet);
+      const std::uint64_t n = std::min(repeatUntil - wires.now(), kDeadlockCycles - quiet);
       if (n > 0) {
         std::size_t i = 0;
         forEachUnit([&](auto& u) { u.repeatTick(before[i++], n); }, groups...);

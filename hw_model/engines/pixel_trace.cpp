@@ -91,6 +91,8 @@ void PixelTrace::fillAhead() {
 
 void PixelTrace::finishFill() {
   for (const OverflowCounters& o : fill_->overflow) overflow.add(o);
+  waitSeconds_ = fill_->waitSeconds;
+  fill_.reset();  // every primitive is published: awaitPrimitive has nothing left to wait for
 }
 
 void PixelTrace::waitFor(int prim) const {

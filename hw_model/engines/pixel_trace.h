@@ -73,8 +73,8 @@ struct PixelTrace {
   // each one filled; the reader calls awaitPrimitive(prim) before it reads a primitive's
   // pixels or clip passes (the traversal unit, as it takes the primitive: a wait of the host,
   // not a modeled cycle), and while it waits it fills the next primitives no filler has taken,
-  // so that a fill slower than the loop still runs on every thread. finishFill() adds the
-  // overflow counters, after every filler is done. A trace that is only planned, then filled
+  // so that a fill slower than the loop still runs on every thread. finishFill(), after every
+  // filler is done, adds the overflow counters and releases the fill's state. A trace that is only planned, then filled
   // by fillAhead from one thread before the loop, is the same trace.
   static PixelTrace plan(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg, int threads);
   void fillAhead();
@@ -83,7 +83,7 @@ struct PixelTrace {
     if (fill_ && !fill_->ready[std::size_t(prim)].load(std::memory_order_acquire)) waitFor(prim);
   }
   // The wall time awaitPrimitive spent waiting or filling (the reader's thread), seconds.
-  double waitSeconds() const { return fill_ ? fill_->waitSeconds : 0.0; }
+  double waitSeconds() const { return fill_ ? fill_->waitSeconds : waitSeconds_; }
 
  private:
   // The state of a fill in progress, shared by the fillers and the reader. It reaches the
@@ -109,7 +109,8 @@ struct PixelTrace {
     std::unique_ptr<PixelDatapath> readerDatapath;  // the reader's, when it fills while it waits
   };
   void waitFor(int prim) const;
-  std::unique_ptr<Fill> fill_;
+  std::unique_ptr<Fill> fill_;  // from plan() to finishFill()
+  double waitSeconds_ = 0;      // the finished fill's
 };
 
 }  // namespace qacc
