@@ -70,11 +70,12 @@ void printSummary(const SweepResults& r, const std::string& out) {
     if (a["point"].is_null())
       std::printf("target %s: %s\n", r.target.c_str(), a["note"].get<std::string>().c_str());
     else {
-      // The colour error beside the target's classes (sweep_results.cpp: "inf" when identical).
+      // The colour error beside the target's classes (sweep_results.cpp: "inf" when identical,
+      // "nan" when a scene lacks it).
       const auto& p = a["worst_psnr_db"];
       char psnr[64] = "PSNR not measured";
       if (p.is_number()) std::snprintf(psnr, sizeof psnr, "lowest PSNR %.1f dB", p.get<double>());
-      else if (p.is_string()) std::snprintf(psnr, sizeof psnr, "every image identical to the reference");
+      else if (p == "inf") std::snprintf(psnr, sizeof psnr, "every image identical to the reference");
       std::printf("target %s: cheapest point %zu (%s), %.1f kGE, worst scene %.4f%% wrong, %s\n", r.target.c_str(),
                   a["point"].get<std::size_t>(), a["label"].get<std::string>().c_str(), a["gates_kge"].get<double>(),
                   a["worst_wrong_percent"].get<double>(), psnr);

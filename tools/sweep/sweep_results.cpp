@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "hw_model/report/stats_file.h"
 #include "tools/sweep/accuracy_target.h"
 #include "tools/sweep/pareto_front.h"
 
@@ -129,11 +130,9 @@ nlohmann::ordered_json sweepFronts(const SweepResults& r) {
       ans["gates_kge"] = agg[p].gates;
       ans["worst_wrong_percent"] = agg[p].wrong;
       // The target may bound classes of wrong pixels only; the colour error of the same point
-      // is given beside them (its lowest PSNR over the scenes; "inf": every image identical).
-      const double psnr = agg[p].psnr;
-      if (std::isinf(psnr)) ans["worst_psnr_db"] = "inf";
-      else if (std::isnan(psnr)) ans["worst_psnr_db"] = nullptr;
-      else ans["worst_psnr_db"] = psnr;
+      // is given beside them: its lowest PSNR over the scenes, written as the rows' PSNR is
+      // ("inf": every image identical; "nan": a scene without it).
+      ans["worst_psnr_db"] = jsonNumber(agg[p].psnr);
       ans["cycles"] = agg[p].cycles;
       nlohmann::ordered_json cfg = nlohmann::ordered_json::object();
       for (const auto& row : r.rows)
