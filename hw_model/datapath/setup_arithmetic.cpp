@@ -153,7 +153,7 @@ PrimitiveSetup setupPrimitive(const Scene& scene, int index, const Eigen::Matrix
   if (cfg.hierarchical_z) s.setupOps += depthFloorOperationCount(int(prim.clip.size()), s.facet);
 
   Eigen::AlignedBox3d extentXY;  // the screen box's exact candidates, which the depth range reuses
-  const WindowPrimitive w = toWindow(prim, index, Minv, scene.width, scene.height, &extentXY);
+  const WindowPrimitive w = toWindow(prim, index, M, Minv, scene.width, scene.height, &extentXY);
   if (w.box.empty()) {
     s.culled = true;
     return s;

@@ -17,7 +17,7 @@ CsgFrame::CsgFrame(const Scene& scene, const HwConfig& cfg, int width, int heigh
   if (scene.csg_trees.empty()) return;
   win.resize(scene.primitives.size());
   treeOfPrimitive.assign(scene.primitives.size(), -1);
-  const Eigen::Matrix4d Minv = scene.camera.worldToWindow(width, height).inverse();
+  const Eigen::Matrix4d M = scene.camera.worldToWindow(width, height), Minv = M.inverse();
   trees.reserve(scene.csg_trees.size());
   const long long maxLeaves = 1LL << cfg.csg_leaf_bits;
   const std::size_t maxPlanes = (std::size_t(1) << cfg.csg_tag_bits) - 2;
@@ -36,7 +36,7 @@ CsgFrame::CsgFrame(const Scene& scene, const HwConfig& cfg, int width, int heigh
                          "a leaf with " + std::to_string(prim.clip.size()) +
                              " clip planes: the accelerator's list ends tag at most " + std::to_string(maxPlanes) +
                              " (csg_tag_bits " + std::to_string(cfg.csg_tag_bits) + ")");
-      win[std::size_t(p)] = toWindow(prim, p, Minv, width, height);
+      win[std::size_t(p)] = toWindow(prim, p, M, Minv, width, height);
       treeOfPrimitive[std::size_t(p)] = int(t);
     }
   }

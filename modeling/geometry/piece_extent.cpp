@@ -95,14 +95,16 @@ void lineCandidates(const Eigen::Matrix4d& Q, const Eigen::Matrix4d& Qa, const E
 
 // addAxisCandidates with Qa = |Q| given (pieceExtent computes it once for all its lines).
 void axisCandidates(const Eigen::Matrix4d& Q, const Eigen::Matrix4d& Qa, const std::vector<Eigen::Vector4d>& P,
-                    const Eigen::Vector3d& ref, int ax, Eigen::AlignedBox3d& ext) {
+                    const Eigen::Vector3d& ref, int ax, Eigen::AlignedBox3d& ext, UnreachablePlanes unreachable) {
   const Eigen::Matrix<double, 3, 4> G = Q.topRows<3>();  // ∇f / 2 = G X
   // (a) ∇f parallel to the axis: the two other gradient components vanish.
   const int o1 = ax == 0 ? 1 : 0, o2 = ax == 2 ? 1 : 2;
   lineCandidates(Q, Qa, G.row(o1).transpose(), G.row(o2).transpose(), P, ref, ext);
   // (b) on each face: ∇f · (n × axis) = 0.
   const Eigen::Vector3d axis = Eigen::Vector3d::Unit(ax);
-  for (const auto& p : P) {
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (unreachable.has(i)) continue;
+    const Eigen::Vector4d& p = P[i];
     const Eigen::Vector3d m = p.head<3>().cross(axis);
     if (m.norm() <= 1e-12 * p.head<3>().norm()) continue;  // face ⟂ axis: its edges bound it
     lineCandidates(Q, Qa, p, (m.transpose() * G).transpose(), P, ref, ext);
@@ -112,18 +114,21 @@ void axisCandidates(const Eigen::Matrix4d& Q, const Eigen::Matrix4d& Qa, const s
 }  // namespace
 
 void addAxisCandidates(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref,
-                       int ax, Eigen::AlignedBox3d& ext) {
-  axisCandidates(Q, Q.cwiseAbs(), P, ref, ax, ext);
+                       int ax, Eigen::AlignedBox3d& ext, UnreachablePlanes unreachable) {
+  axisCandidates(Q, Q.cwiseAbs(), P, ref, ax, ext, unreachable);
 }
 
 Eigen::AlignedBox3d pieceExtent(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, bool solid,
-                                const Eigen::Vector3d& ref, int axes) {
+                                const Eigen::Vector3d& ref, int axes, UnreachablePlanes unreachable) {
   Eigen::AlignedBox3d ext;  // empty
   const Eigen::Matrix4d Qa = Q.cwiseAbs();
-  for (int ax = 0; ax < axes; ++ax) axisCandidates(Q, Qa, P, ref, ax, ext);
+  for (int ax = 0; ax < axes; ++ax) axisCandidates(Q, Qa, P, ref, ax, ext, unreachable);
   // (c) each edge of the polytope against the surface.
-  for (std::size_t i = 0; i < P.size(); ++i)
-    for (std::size_t j = i + 1; j < P.size(); ++j) lineCandidates(Q, Qa, P[i], P[j], P, ref, ext);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (unreachable.has(i)) continue;
+    for (std::size_t j = i + 1; j < P.size(); ++j)
+      if (!unreachable.has(j)) lineCandidates(Q, Qa, P[i], P[j], P, ref, ext);
+  }
   // The singular point of a cone.
   const Eigen::Matrix3d E = Q.topLeftCorner<3, 3>();
   Eigen::FullPivLU<Eigen::Matrix3d> lu(E);

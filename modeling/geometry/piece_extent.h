@@ -10,6 +10,7 @@
 // axes x and y inside the view volume) and by the world-space bounds of a primitive
 // (primitive_bounds.h, all three axes).
 #pragma once
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -17,12 +18,23 @@
 
 namespace qacc {
 
+// Planes of a polytope P known not to meet the piece (the caller knows the piece lies inside
+// each by a margin, e.g. from bounds found before): no point of the surface in P lies on
+// them, so their faces' and edges' candidate lines (b) and (c) cannot add one and are not
+// cut. Bit j stands for P[first + j].
+struct UnreachablePlanes {
+  std::size_t first = 0;
+  unsigned mask = 0;
+  bool has(std::size_t i) const { return i >= first && i - first < 32 && ((mask >> (i - first)) & 1u) != 0; }
+};
+
 // Extent of the candidates for the first `axes` coordinate axes (2: x and y; 3: x, y and
 // z) of the piece of quadric Q inside the polytope {X : p·(X, 1) <= 0 for p in P}; `ref` is
 // a point near the region (it anchors the candidate lines). Empty when the piece is empty.
 // The polytope must be bounded (add bounding planes): only then is the extent exact.
+// `unreachable` planes' lines are left out: the same box when the planes are as said.
 Eigen::AlignedBox3d pieceExtent(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, bool solid,
-                                const Eigen::Vector3d& ref, int axes);
+                                const Eigen::Vector3d& ref, int axes, UnreachablePlanes unreachable = {});
 
 // Adds to `ext` the candidates of coordinate axis `ax` (the surface points where ∇f is
 // parallel to it, and those of each face's conic), the only ones pieceExtent(..., axes)
@@ -30,7 +42,7 @@ Eigen::AlignedBox3d pieceExtent(const Eigen::Matrix4d& Q, const std::vector<Eige
 // and y extent is known costs only the z candidates. The box equals pieceExtent's: the
 // same points, extended in another order (a box's minimum and maximum do not depend on it).
 void addAxisCandidates(const Eigen::Matrix4d& Q, const std::vector<Eigen::Vector4d>& P, const Eigen::Vector3d& ref,
-                       int ax, Eigen::AlignedBox3d& ext);
+                       int ax, Eigen::AlignedBox3d& ext, UnreachablePlanes unreachable = {});
 
 // Vertices of the polytope P ∩ {plane = 0} (all vertices of P when plane is null), each
 // inside P within a relative tolerance of 1e-9.

@@ -92,4 +92,16 @@ PrimitiveBounds primitiveBounds(const Primitive& prim) {
   return out;
 }
 
+void recordWorldBox(Primitive& prim, const PrimitiveBounds& bounds) {
+  prim.known_box = {};
+  if (!bounds.bounded || bounds.empty) return;
+  prim.known_box.box = bounds.box;
+  prim.known_box.key = prim.shapeKey();
+}
+
+const Eigen::AlignedBox3d* knownWorldBox(const Primitive& prim) {
+  if (prim.known_box.key == 0 || prim.known_box.key != prim.shapeKey()) return nullptr;
+  return &prim.known_box.box;
+}
+
 }  // namespace qacc

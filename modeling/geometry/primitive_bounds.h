@@ -17,4 +17,10 @@ struct PrimitiveBounds {
 
 PrimitiveBounds primitiveBounds(const Primitive& prim);
 
+// Keeps `bounds` with the primitive (Primitive::known_box) when bounded and not empty, keyed
+// by its shape, for knownWorldBox.
+void recordWorldBox(Primitive& prim, const PrimitiveBounds& bounds);
+// The recorded box when the primitive is still the one it was recorded for, else null.
+const Eigen::AlignedBox3d* knownWorldBox(const Primitive& prim);
+
 }  // namespace qacc

@@ -307,6 +307,7 @@ BuiltObject buildPrimitives(const JsonNode& o, int objectIndex, Scene& scene, co
     };
     for (Primitive& p : out.prims) {
       const PrimitiveBounds b = primitiveBounds(p);
+      recordWorldBox(p, b);  // for each frame's setup (window_primitive.h)
       if (!b.bounded || b.empty) {
         keep(p);
         continue;

@@ -5,8 +5,10 @@
 #include <limits>
 
 #include "modeling/geometry/piece_extent.h"
+#include "modeling/geometry/primitive_bounds.h"
 #include "modeling/geometry/stable_roots.h"
 #include "modeling/geometry/unit_plane.h"
+#include "modeling/scene/view_volume.h"
 
 namespace qacc {
 namespace {
@@ -135,15 +137,44 @@ ScreenBox polytopeBox(const std::vector<HalfSpace>& clip, int width, int height)
 // The anchor of the candidate lines of a window-space piece: the middle of the view volume.
 static Eigen::Vector3d viewCentre(int width, int height) { return {width / 2.0, height / 2.0, 0.5}; }
 
+// The view faces of boundedPolytope(clip, ...), which follow the clip planes, as P's planes.
+static UnreachablePlanes viewFaces(const std::vector<HalfSpace>& clip, unsigned faces) {
+  return {clip.size(), faces};
+}
+
 // The piece's extent from the candidates of x and y (pieceExtent, axes 2).
 static Eigen::AlignedBox3d pieceExtentXY(const Eigen::Matrix4d& Q, const std::vector<HalfSpace>& clip, bool solid,
-                                         int width, int height) {
-  return pieceExtent(Q, boundedPolytope(clip, width, height), solid, viewCentre(width, height), 2);
+                                         int width, int height, unsigned unreachableFaces = 0) {
+  return pieceExtent(Q, boundedPolytope(clip, width, height), solid, viewCentre(width, height), 2,
+                     viewFaces(clip, unreachableFaces));
 }
 
 ScreenBox patchBox(const Eigen::Matrix4d& Q, const std::vector<HalfSpace>& clip, bool solid, int width,
                    int height) {
   return pixelBox(pieceExtentXY(Q, clip, solid, width, height), width, height);
+}
+
+unsigned unreachableViewFaces(const Primitive& prim, const Eigen::Matrix4d& M, int width, int height) {
+  const Eigen::AlignedBox3d* wb = knownWorldBox(prim);
+  if (!wb) return 0;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector4d X = M * wb->corner(Eigen::AlignedBox3d::CornerType(i)).homogeneous();
+    if (!(X[3] > 0)) return 0;  // reaches the eye's plane: its image is not the corners' hull
+    const Eigen::Vector3d x = X.head<3>() / X[3];
+    if (!x.allFinite()) return 0;
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  constexpr double px = ViewVolume::kMarginPixels, dz = ViewVolume::kMarginDepth;
+  unsigned faces = 0;
+  if (lo.x() > px) faces |= 1u;
+  if (hi.x() < width - px) faces |= 2u;
+  if (lo.y() > px) faces |= 4u;
+  if (hi.y() < height - px) faces |= 8u;
+  if (lo.z() > dz) faces |= 16u;
+  if (hi.z() < 1 - dz) faces |= 32u;
+  return faces;
 }
 
 ScreenBox worldBoxToScreen(const Eigen::AlignedBox3d& wb, const Eigen::Matrix4d& M, int width, int height) {
@@ -184,9 +215,11 @@ DepthRange pieceDepthRange(const Primitive& prim, const WindowPrimitive& w, cons
   Eigen::AlignedBox3d ext;
   if (extentXY) {
     ext = *extentXY;
-    addAxisCandidates(w.Q, boundedPolytope(w.clip, width, height), viewCentre(width, height), 2, ext);
+    addAxisCandidates(w.Q, boundedPolytope(w.clip, width, height), viewCentre(width, height), 2, ext,
+                      viewFaces(w.clip, w.unreachable_view_faces));
   } else {
-    ext = pieceExtent(w.Q, boundedPolytope(w.clip, width, height), w.solid, viewCentre(width, height), 3);
+    ext = pieceExtent(w.Q, boundedPolytope(w.clip, width, height), w.solid, viewCentre(width, height), 3,
+                      viewFaces(w.clip, w.unreachable_view_faces));
   }
   if (!ext.isEmpty()) {
     r.lo = ext.min().z();
@@ -195,8 +228,8 @@ DepthRange pieceDepthRange(const Primitive& prim, const WindowPrimitive& w, cons
   return r;
 }
 
-WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& Minv, int width, int height,
-                         Eigen::AlignedBox3d* extentXY) {
+WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& M, const Eigen::Matrix4d& Minv,
+                         int width, int height, Eigen::AlignedBox3d* extentXY) {
   WindowPrimitive w;
   w.index = index;
   w.solid = prim.solid;
@@ -219,7 +252,8 @@ WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d
     w.box = pixelBox(ext, width, height);
     return w;
   }
-  const Eigen::AlignedBox3d ext = pieceExtentXY(w.Q, w.clip, w.solid, width, height);
+  w.unreachable_view_faces = unreachableViewFaces(prim, M, width, height);
+  const Eigen::AlignedBox3d ext = pieceExtentXY(w.Q, w.clip, w.solid, width, height, w.unreachable_view_faces);
   if (extentXY) *extentXY = ext;
   const ScreenBox piece = pixelBox(ext, width, height);
   if (w.solid && !(w.a() > 0)) {

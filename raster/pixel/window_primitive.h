@@ -36,6 +36,9 @@ struct WindowPrimitive {
   int material = 0;
   int object = 0;
   ScreenBox box;  // pixels that can show this primitive (empty: cannot be seen)
+  // The view volume's faces the piece cannot reach, known from its world bounds (bit i: the
+  // i-th of x >= 0, x <= W, y >= 0, y <= H, z >= 0, z <= 1): their candidates are not cut.
+  unsigned unreachable_view_faces = 0;
 
   double a() const { return Q(2, 2); }
   double b(double x, double y) const { return Q(0, 2) * x + Q(1, 2) * y + Q(2, 3); }
@@ -48,9 +51,16 @@ struct WindowPrimitive {
 // Window-space form of `prim` for a width x height image; M = world → window, Minv = M⁻¹.
 // `extentXY`, when given, receives the window-space extent the screen box was made from (a
 // planar primitive's polygon vertices, or the piece's x and y candidates), which
-// pieceDepthRange then completes with the z candidates alone.
-WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& Minv, int width, int height,
-                         Eigen::AlignedBox3d* extentXY = nullptr);
+// pieceDepthRange then completes with the z candidates alone. A primitive whose world box
+// the loader recorded (knownWorldBox) skips the candidates on the view volume's faces that
+// box keeps it from (unreachable_view_faces): the same box, from fewer candidates.
+WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d& M, const Eigen::Matrix4d& Minv,
+                         int width, int height, Eigen::AlignedBox3d* extentXY = nullptr);
+// The view faces (WindowPrimitive::unreachable_view_faces) that `prim`'s recorded world box
+// keeps its piece from: the box carried to window space (its corners' images, all in front
+// of the eye) inside each face by the view culling's margins (ViewVolume::kMarginPixels,
+// kMarginDepth). 0 without a valid record.
+unsigned unreachableViewFaces(const Primitive& prim, const Eigen::Matrix4d& M, int width, int height);
 
 // Pixels covering the window-space projection of the clipped piece itself: the exact x and y
 // extents of (surface ∩ clip polyhedron ∩ view volume), or of (solid ∩ ...) when `solid`,

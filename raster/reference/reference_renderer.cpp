@@ -47,7 +47,7 @@ FrameBuffer renderReference(const Scene& scene, int threads, ReferenceStats* sta
     const Primitive& p = scene.primitives[std::size_t(i)];
     const bool replaced = p.object >= 0 && p.object < int(scene.objects.size()) &&
                           scene.objects[std::size_t(p.object)].exact_surface >= 0;
-    if (!replaced) win[std::size_t(i)] = toWindow(p, i, Minv, W, H);
+    if (!replaced) win[std::size_t(i)] = toWindow(p, i, M, Minv, W, H);
   }
 
   // A CSG object is one item in place of its leaves (csg_hit.h).

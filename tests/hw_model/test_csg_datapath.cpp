@@ -35,7 +35,7 @@ Agreement compare(const std::string& objects, const std::string& eye) {
     OverflowCounter ovf;
     const PrimitiveSetup s = setupPrimitive(scene, i, M, M.inverse(), cfg, ovf);
     if (!s.visible) continue;
-    const WindowPrimitive w = toWindow(scene.primitives[std::size_t(i)], i, M.inverse(), scene.width, scene.height);
+    const WindowPrimitive w = toWindow(scene.primitives[std::size_t(i)], i, M, M.inverse(), scene.width, scene.height);
     PixelDatapath dp(s, cfg);
     OverflowCounters oc;
     const double unit = std::ldexp(1.0, -cfg.depth_frac_bits);

@@ -25,12 +25,12 @@ namespace {
 // Per csg object: its tree, its normal form (Goldfeather) and the work per 32x32 tile of a
 // product-at-a-time method with and without pruning by screen boxes.
 void printCsgInfo(const Scene& s) {
-  const Eigen::Matrix4d Minv = s.camera.worldToWindow(s.width, s.height).inverse();
+  const Eigen::Matrix4d M = s.camera.worldToWindow(s.width, s.height), Minv = M.inverse();
   std::vector<WindowPrimitive> win(s.primitives.size());
   std::vector<ScreenBox> boxes(s.primitives.size());
   for (const CsgTree& t : s.csg_trees)
     for (int p : t.leafPrimitives()) {
-      win[std::size_t(p)] = toWindow(s.primitives[std::size_t(p)], p, Minv, s.width, s.height);
+      win[std::size_t(p)] = toWindow(s.primitives[std::size_t(p)], p, M, Minv, s.width, s.height);
       boxes[std::size_t(p)] = win[std::size_t(p)].box;
     }
   std::printf("csg objects: %zu\n", s.csg_trees.size());
