@@ -193,7 +193,7 @@ TEST(WindowPrimitive, KnownWorldBoxesLeaveOutOnlyCandidatesThatCannotCount) {
       }
   }
   EXPECT_GT(compared, 20000);
-  EXPECT_GT(recorded, compared / 2);
+  EXPECT_EQ(recorded, compared);  // the loader records every piece of these scenes
   EXPECT_GT(skipped, 3 * compared);
   EXPECT_GT(partial, 100);
 }
