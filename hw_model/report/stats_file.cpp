@@ -14,6 +14,16 @@ nlohmann::ordered_json jsonNumber(double v) {
   return v > 0 ? "inf" : (v < 0 ? "-inf" : "nan");
 }
 
+double jsonNumberValue(const nlohmann::ordered_json& v) {
+  if (v.is_number()) return v.get<double>();
+  if (v.is_string()) {
+    const std::string& s = v.get_ref<const std::string&>();
+    if (s == "inf") return INFINITY;
+    if (s == "-inf") return -INFINITY;
+  }
+  return std::nan("");
+}
+
 namespace {
 void flatten(const nlohmann::ordered_json& j, const std::string& prefix, std::vector<std::string>& keys,
              std::vector<std::string>& values) {

@@ -11,6 +11,9 @@ namespace qacc {
 
 // A number, or "inf" / "-inf" / "nan" (JSON has no non-finite numbers; PSNR of equal images is inf).
 nlohmann::ordered_json jsonNumber(double v);
+// The number jsonNumber wrote: a JSON number, or "inf" / "-inf" / "nan" as ±infinity / NaN;
+// NaN for anything else (a missing figure).
+double jsonNumberValue(const nlohmann::ordered_json& v);
 // The leaves of `j` as dotted keys and their text (strings unquoted).
 void flattenJson(const nlohmann::ordered_json& j, std::vector<std::string>& keys, std::vector<std::string>& values);
 // One header line + one value line.

@@ -16,6 +16,7 @@
 
 #include "tests/tools/command_run.h"
 #include "tools/engines/reference_cache.h"
+#include "hw_model/report/stats_file.h"
 #include "tools/sweep/autosize.h"
 #include "tools/sweep/pareto_front.h"
 #include "tools/sweep/sweep_points.h"
@@ -221,6 +222,21 @@ TEST(Autosize, FindsTheExhaustiveOptimumOfASmallGrid) {
   ASSERT_TRUE(r.found);
   EXPECT_NEAR(r.gates_kge, bestGe, 1e-9) << "exhaustive optimum: " << bestLabel;
   EXPECT_LE(r.evaluations, all.rows.size());
+  // The answer's colour error is its render's: the lowest PSNR over its one scene, the
+  // exhaustive sweep's row of the same configuration (and at least what the target asks).
+  int matched = 0;
+  for (const auto& row : all.rows)
+    if (row["config.value_bits"] == r.best.value_bits && row["config.normal_bits"] == r.best.normal_bits &&
+        row["config.unit_frac_bits"] == r.best.unit_frac_bits) {
+      EXPECT_EQ(jsonNumberValue(row["psnr_db"]), r.worst_psnr_db);
+      EXPECT_EQ(r.worst_wrong_percent, row["wrong_percent"].get<double>());
+      ++matched;
+    }
+  EXPECT_EQ(matched, 1);
+  EXPECT_GE(r.worst_psnr_db, 40);
+  EXPECT_EQ(lowestPsnrText(r.worst_psnr_db).rfind("lowest PSNR ", 0), 0u);
+  EXPECT_EQ(lowestPsnrText(INFINITY), "every image identical to the reference");
+  EXPECT_EQ(lowestPsnrText(std::nan("")), "PSNR not measured");
 }
 
 TEST(CommandLine, FlagsAnEngineDoesNotReadAreRefused) {

@@ -11,6 +11,7 @@
 #include "tools/cli/commands.h"
 #include "tools/engines/reference_cache.h"
 #include "tools/sweep/autosize.h"
+#include "tools/sweep/sweep_results.h"
 
 namespace qacc {
 
@@ -75,8 +76,10 @@ void runAutosize(const AutosizeArgs& a) {
   std::printf("\nautosize: %zu candidate configurations, %zu rendered (each on every scene until one fails)\n", r.grid,
               r.evaluations);
   if (!r.found) throw std::invalid_argument("autosize: no candidate configuration meets " + a.target);
-  std::printf("autosize: cheapest configuration meeting the target: %.1f kGE (base %s: %.1f kGE), worst scene %.4f%% wrong\n",
-              r.gates_kge, o.base.name.c_str(), r.base_gates_kge, r.worst_wrong_percent);
+  std::printf("autosize: cheapest configuration meeting the target: %.1f kGE (base %s: %.1f kGE), worst scene %.4f%% wrong, "
+              "%s\n",
+              r.gates_kge, o.base.name.c_str(), r.base_gates_kge, r.worst_wrong_percent,
+              lowestPsnrText(r.worst_psnr_db).c_str());
   for (const auto& k : hwConfigKeys())
     if (isHwWidthKey(k)) {
       const int v = hwConfigValue(r.best, k).get<int>(), b = hwConfigValue(o.base, k).get<int>();

@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "tools/cli/commands.h"
+#include "hw_model/report/stats_file.h"
 #include "tools/report/build_info.h"
 #include "tools/engines/reference_cache.h"
+#include "tools/sweep/sweep_results.h"
 #include "tools/sweep/sweep_runner.h"
 
 namespace qacc {
@@ -70,15 +72,10 @@ void printSummary(const SweepResults& r, const std::string& out) {
     if (a["point"].is_null())
       std::printf("target %s: %s\n", r.target.c_str(), a["note"].get<std::string>().c_str());
     else {
-      // The colour error beside the target's classes (sweep_results.cpp: "inf" when identical,
-      // "nan" when a scene lacks it).
-      const auto& p = a["worst_psnr_db"];
-      char psnr[64] = "PSNR not measured";
-      if (p.is_number()) std::snprintf(psnr, sizeof psnr, "lowest PSNR %.1f dB", p.get<double>());
-      else if (p == "inf") std::snprintf(psnr, sizeof psnr, "every image identical to the reference");
+      // The colour error beside the target's classes.
       std::printf("target %s: cheapest point %zu (%s), %.1f kGE, worst scene %.4f%% wrong, %s\n", r.target.c_str(),
                   a["point"].get<std::size_t>(), a["label"].get<std::string>().c_str(), a["gates_kge"].get<double>(),
-                  a["worst_wrong_percent"].get<double>(), psnr);
+                  a["worst_wrong_percent"].get<double>(), lowestPsnrText(jsonNumberValue(a["worst_psnr_db"])).c_str());
     }
   }
 }

@@ -1,11 +1,13 @@
 #include "tools/sweep/autosize.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 #include <stdexcept>
 
 #include "hw_model/report/cost_model.h"
+#include "hw_model/report/stats_file.h"
 
 namespace qacc {
 
@@ -29,19 +31,24 @@ struct Search {
     return true;
   }
   // Renders on every scene; true when every scene meets the target.
-  bool meets(const HwConfig& c, double* worst) {
+  // `worst` and `psnr`, when given, receive the worst scene's wrong pixels and the lowest PSNR
+  // (NaN when a scene lacks it) over the scenes rendered.
+  bool meets(const HwConfig& c, double* worst, double* psnr = nullptr) {
     ++evaluations;
-    double w = 0;
+    double w = 0, p = INFINITY;
     bool ok = true;
     for (const std::string& s : o.scenes) {
       const nlohmann::ordered_json row = ev.evaluate(c, o.knobs, s);
       w = std::max(w, row["wrong_percent"].get<double>());
+      const double sp = row.contains("psnr_db") ? jsonNumberValue(row["psnr_db"]) : std::nan("");
+      p = std::isnan(sp) || std::isnan(p) ? std::nan("") : std::min(p, sp);
       if (!o.target.meets(row)) {
         ok = false;
         break;  // one failing scene decides
       }
     }
     if (worst) *worst = w;
+    if (psnr) *psnr = p;
     return ok;
   }
 };
@@ -155,8 +162,8 @@ AutosizeResult autosize(const AutosizeOptions& o, SweepEvaluator& ev) {
     if (dominatedByFailure(g.v)) continue;
     HwConfig c;
     s.make(keys, g.v, c);
-    double worst = 0;
-    const bool ok = s.meets(c, &worst);
+    double worst = 0, psnr = 0;
+    const bool ok = s.meets(c, &worst, &psnr);
     if (o.verbose) {
       std::string d;
       for (std::size_t k = 0; k < keys.size(); ++k) d += (k ? " " : "") + keys[k] + "=" + std::to_string(g.v[k]);
@@ -171,6 +178,7 @@ AutosizeResult autosize(const AutosizeOptions& o, SweepEvaluator& ev) {
     r.best.name = "autosize";
     r.gates_kge = g.ge / 1e3;
     r.worst_wrong_percent = worst;
+    r.worst_psnr_db = psnr;
     break;
   }
   r.evaluations = s.evaluations;

@@ -44,6 +44,7 @@ struct AutosizeResult {
   HwConfig best;
   double gates_kge = 0, base_gates_kge = 0;
   double worst_wrong_percent = 0;
+  double worst_psnr_db = 0;         // the answer's lowest PSNR over the scenes (inf: identical; NaN: not measured)
   std::size_t evaluations = 0;      // configurations rendered (on every scene)
   std::size_t grid = 0;             // candidate configurations after the bounds
   std::map<std::string, int> bound; // narrowest passing value of each key alone

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -24,11 +25,7 @@ bool isHostColumn(const std::string& c) {
 namespace {
 
 double num(const nlohmann::ordered_json& row, const std::string& k) {
-  if (!row.contains(k)) return std::nan("");
-  const auto& v = row[k];
-  if (v.is_number()) return v.get<double>();
-  if (v.is_string() && v.get<std::string>() == "inf") return INFINITY;
-  return std::nan("");
+  return row.contains(k) ? jsonNumberValue(row[k]) : std::nan("");
 }
 
 bool ok(const nlohmann::ordered_json& row) { return row.value("status", std::string()) == "ok"; }
@@ -275,6 +272,14 @@ SweepResults mergeSweepResults(const std::vector<SweepResults>& parts, const std
   }
   for (auto& [k, row] : rows) m.rows.push_back(row);
   return m;
+}
+
+std::string lowestPsnrText(double psnr) {
+  if (std::isnan(psnr)) return "PSNR not measured";
+  if (psnr == INFINITY) return "every image identical to the reference";
+  char t[64];
+  std::snprintf(t, sizeof t, "lowest PSNR %.1f dB", psnr);
+  return t;
 }
 
 }  // namespace qacc

@@ -25,6 +25,10 @@ struct SweepResults {
 };
 
 nlohmann::ordered_json sweepFronts(const SweepResults& r);
+// An answer's lowest PSNR over its scenes as `qacc sweep` and `qacc autosize` print it:
+// "lowest PSNR 46.8 dB", "every image identical to the reference" (inf), or "PSNR not
+// measured" (NaN: a scene without it). A target on wrong pixels alone says nothing of colour.
+std::string lowestPsnrText(double psnr);
 // Columns that depend on the host (timing, cache state); everything else is a function of
 // the spec alone, so a merged sweep equals an unsharded one on the other columns.
 bool isHostColumn(const std::string& column);
