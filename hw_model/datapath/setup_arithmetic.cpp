@@ -134,7 +134,6 @@ int boxTestOperationCount(int planes, bool facet) {
 
 PrimitiveSetup setupPrimitive(const Scene& scene, int index, const Eigen::Matrix4d& M, const Eigen::Matrix4d& Minv,
                               const HwConfig& cfg, OverflowCounter& ovf) {
-  (void)M;
   const Primitive& prim = scene.primitives[std::size_t(index)];
   PrimitiveSetup s;
   s.index = index;

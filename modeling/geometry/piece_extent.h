@@ -19,9 +19,9 @@
 namespace qacc {
 
 // Planes of a polytope P known not to meet the piece (the caller knows the piece lies inside
-// each by a margin, e.g. from bounds found before): no point of the surface in P lies on
-// them, so their faces' and edges' candidate lines (b) and (c) cannot add one and are not
-// cut. Bit j stands for P[first + j].
+// each by a margin far above insidePolytope's tolerance, e.g. from bounds found before): no
+// point of the surface within that tolerance of P lies on them, so their faces' and edges'
+// candidate lines (b) and (c) cannot add one and are not cut. Bit j stands for P[first + j].
 struct UnreachablePlanes {
   std::size_t first = 0;
   unsigned mask = 0;

@@ -22,7 +22,7 @@ namespace qacc {
 constexpr std::size_t kFacetsModuleAbi[] = {
     sizeof(Scene),        alignof(Scene),        sizeof(TriangleMesh3),      alignof(TriangleMesh3),
     sizeof(FacetRenderOptions), alignof(FacetRenderOptions), sizeof(FacetRenderResult), alignof(FacetRenderResult),
-    sizeof(FrameBuffer),  sizeof(Camera)};
+    sizeof(FrameBuffer),  sizeof(Camera),        sizeof(Primitive),          alignof(Primitive)};
 constexpr std::size_t kFacetsModuleAbiSize = sizeof(kFacetsModuleAbi) / sizeof(kFacetsModuleAbi[0]);
 }  // namespace qacc
 

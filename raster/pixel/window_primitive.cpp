@@ -166,7 +166,10 @@ unsigned unreachableViewFaces(const Primitive& prim, const Eigen::Matrix4d& M, i
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  constexpr double px = ViewVolume::kMarginPixels, dz = ViewVolume::kMarginDepth;
+  // The margins stand far above what a candidate on a face could be off by: insidePolytope
+  // accepts a point outside a plane by 1e-9 of the plane's terms, at most about
+  // 1e-9 (width + height) in window units along the plane's normal, which may lie in z.
+  const double px = ViewVolume::kMarginPixels, dz = 1e-4 + 1e-8 * (double(width) + double(height));
   unsigned faces = 0;
   if (lo.x() > px) faces |= 1u;
   if (hi.x() < width - px) faces |= 2u;

@@ -58,8 +58,9 @@ WindowPrimitive toWindow(const Primitive& prim, int index, const Eigen::Matrix4d
                          int width, int height, Eigen::AlignedBox3d* extentXY = nullptr);
 // The view faces (WindowPrimitive::unreachable_view_faces) that `prim`'s recorded world box
 // keeps its piece from: the box carried to window space (its corners' images, all in front
-// of the eye) inside each face by the view culling's margins (ViewVolume::kMarginPixels,
-// kMarginDepth). 0 without a valid record.
+// of the eye) inside each face by a margin — the view culling's two pixels
+// (ViewVolume::kMarginPixels) on the screen's edges, 1e-4 + 1e-8 (width + height) in depth,
+// both far above the candidates' tolerance (insidePolytope). 0 without a valid record.
 unsigned unreachableViewFaces(const Primitive& prim, const Eigen::Matrix4d& M, int width, int height);
 
 // Pixels covering the window-space projection of the clipped piece itself: the exact x and y

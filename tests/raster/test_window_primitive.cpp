@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -145,11 +146,11 @@ TEST(WindowPrimitive, DepthRangeFromTheBoxCandidatesEqualsTheFullOne) {
 // The world boxes the loader records (knownWorldBox) only leave out candidates that could
 // not count: every primitive's screen box, x-y extent and depth range are those it has with
 // the record removed, bit for bit, on the shipped scenes seen whole, zoomed in (pieces
-// across the screen's edges and the near plane) and from close by; the faces left out
-// are most of them on the molecule seen whole, and some but not all of them for pieces
-// across an edge.
+// across the screen's edges), from close by (across the near plane), with the far plane
+// through the scene, and orthographic; the faces left out are most of them, and some but
+// not all of them for pieces across an edge, the near or the far plane.
 TEST(WindowPrimitive, KnownWorldBoxesLeaveOutOnlyCandidatesThatCannotCount) {
-  long long recorded = 0, skipped = 0, partial = 0, compared = 0;
+  long long recorded = 0, skipped = 0, partial = 0, compared = 0, nearReached = 0, farReached = 0;
   for (const char* name : {"sphereflake", "molecule", "gallery", "cylinders", "vase_g0", "character", "quartic",
                            "macropatch_g1", "csg/csg_mechanical"}) {
     const Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/" + name + ".json");
@@ -157,7 +158,13 @@ TEST(WindowPrimitive, KnownWorldBoxesLeaveOutOnlyCandidatesThatCannotCount) {
     zoomed.fov_y_deg /= 4;
     Camera close = scene.camera;
     close.eye = scene.camera.target + 0.3 * (scene.camera.eye - scene.camera.target);
-    for (const Camera& cam : {scene.camera, zoomed, close})
+    const double distance = (scene.camera.eye - scene.camera.target).norm();
+    Camera cut = scene.camera;
+    cut.far = distance;  // through the middle of the scene
+    Camera ortho = scene.camera;
+    ortho.type = Camera::Type::Orthographic;
+    ortho.height = 2 * distance * std::tan(scene.camera.fov_y_deg * M_PI / 360);
+    for (const Camera& cam : {scene.camera, zoomed, close, cut, ortho})
       for (const auto& [W, H] : {std::pair{160, 120}, std::pair{1920, 1080}}) {
         const Eigen::Matrix4d M = cam.worldToWindow(W, H), Minv = M.inverse();
         for (std::size_t i = 0; i < scene.primitives.size(); i += name == std::string("molecule") ? 3 : 1) {
@@ -173,6 +180,10 @@ TEST(WindowPrimitive, KnownWorldBoxesLeaveOutOnlyCandidatesThatCannotCount) {
           ASSERT_EQ(b.unreachable_view_faces, 0u) << at;
           skipped += __builtin_popcount(w.unreachable_view_faces);
           partial += w.unreachable_view_faces != 0 && w.unreachable_view_faces != 63;
+          if (w.unreachable_view_faces != 0) {
+            nearReached += (w.unreachable_view_faces & 16u) == 0;
+            farReached += (w.unreachable_view_faces & 32u) == 0;
+          }
           ASSERT_EQ(w.box.x0, b.box.x0) << at;
           ASSERT_EQ(w.box.y0, b.box.y0) << at;
           ASSERT_EQ(w.box.x1, b.box.x1) << at;
@@ -196,6 +207,8 @@ TEST(WindowPrimitive, KnownWorldBoxesLeaveOutOnlyCandidatesThatCannotCount) {
   EXPECT_EQ(recorded, compared);  // the loader records every piece of these scenes
   EXPECT_GT(skipped, 3 * compared);
   EXPECT_GT(partial, 100);
+  EXPECT_GT(nearReached, 10);
+  EXPECT_GT(farReached, 10);
 }
 
 // A record is the loader's finding for the primitive as it was: a primitive changed after
