@@ -1,6 +1,6 @@
 #include "modeling/geometry/primitive.h"
 
-#include <cstring>
+#include "modeling/support/double_bits.h"
 
 namespace qacc {
 
@@ -18,19 +18,13 @@ std::uint64_t mix(std::uint64_t h, std::uint64_t word) {
   return h ^ (h >> 31);
 }
 
-std::uint64_t bitsOf(double v) {
-  std::uint64_t u;
-  std::memcpy(&u, &v, sizeof u);
-  return u;
-}
-
 }  // namespace
 
 std::uint64_t Primitive::shapeKey() const {
   std::uint64_t h = mix(0x9e3779b97f4a7c15ULL, (std::uint64_t(clip.size()) << 1) | std::uint64_t(solid));
-  for (int i = 0; i < 16; ++i) h = mix(h, bitsOf(quadric.Q(i)));
+  for (int i = 0; i < 16; ++i) h = mix(h, doubleBits(quadric.Q(i)));
   for (const HalfSpace& c : clip) {
-    for (int i = 0; i < 4; ++i) h = mix(h, bitsOf(c.p[i]));
+    for (int i = 0; i < 4; ++i) h = mix(h, doubleBits(c.p[i]));
     h = mix(h, std::uint64_t(c.owns_boundary));
   }
   return h == 0 ? 1 : h;

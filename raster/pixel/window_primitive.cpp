@@ -154,18 +154,32 @@ ScreenBox patchBox(const Eigen::Matrix4d& Q, const std::vector<HalfSpace>& clip,
   return pixelBox(pieceExtentXY(Q, clip, solid, width, height), width, height);
 }
 
+// The window-space box [lo, hi] of a world box's image, from its 8 corners carried by M.
+// False when a corner lies on or behind the eye's plane (w <= 0): the image is then not inside
+// the corners' hull. `finite` tells whether every corner's image is finite.
+static bool windowImageBox(const Eigen::AlignedBox3d& wb, const Eigen::Matrix4d& M, Eigen::Vector3d& lo,
+                           Eigen::Vector3d& hi, bool& finite) {
+  lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  hi = -lo;
+  finite = true;
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector4d X = M * wb.corner(Eigen::AlignedBox3d::CornerType(i)).homogeneous();
+    if (!(X[3] > 0)) return false;
+    for (int k = 0; k < 3; ++k) {
+      const double x = X[k] / X[3];
+      finite = finite && std::isfinite(x);
+      lo[k] = std::min(lo[k], x);
+      hi[k] = std::max(hi[k], x);
+    }
+  }
+  return true;
+}
+
 unsigned unreachableViewFaces(const Primitive& prim, const Eigen::Matrix4d& M, int width, int height) {
   const Eigen::AlignedBox3d* wb = knownWorldBox(prim);
-  if (!wb) return 0;
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (int i = 0; i < 8; ++i) {
-    const Eigen::Vector4d X = M * wb->corner(Eigen::AlignedBox3d::CornerType(i)).homogeneous();
-    if (!(X[3] > 0)) return 0;  // reaches the eye's plane: its image is not the corners' hull
-    const Eigen::Vector3d x = X.head<3>() / X[3];
-    if (!x.allFinite()) return 0;
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
+  Eigen::Vector3d lo, hi;
+  bool finite = false;
+  if (!wb || !windowImageBox(*wb, M, lo, hi, finite) || !finite) return 0;
   // The margins stand far above what a candidate on a face could be off by: insidePolytope
   // accepts a point outside a plane by 1e-9 of the plane's terms, at most about
   // 1e-9 (width + height) in window units along the plane's normal, which may lie in z.
@@ -182,18 +196,12 @@ unsigned unreachableViewFaces(const Primitive& prim, const Eigen::Matrix4d& M, i
 
 ScreenBox worldBoxToScreen(const Eigen::AlignedBox3d& wb, const Eigen::Matrix4d& M, int width, int height) {
   if (wb.isEmpty()) return {};
-  double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
-  for (int i = 0; i < 8; ++i) {
-    const Eigen::Vector4d X = M * wb.corner(Eigen::AlignedBox3d::CornerType(i)).homogeneous();
-    if (!(X[3] > 0)) return screen(width, height);
-    xmin = std::min(xmin, X[0] / X[3]);
-    xmax = std::max(xmax, X[0] / X[3]);
-    ymin = std::min(ymin, X[1] / X[3]);
-    ymax = std::max(ymax, X[1] / X[3]);
-  }
+  Eigen::Vector3d lo, hi;
+  bool finite;
+  if (!windowImageBox(wb, M, lo, hi, finite)) return screen(width, height);
   ScreenBox box;
-  pixelRange(xmin, xmax, width, box.x0, box.x1);
-  pixelRange(ymin, ymax, height, box.y0, box.y1);
+  pixelRange(lo.x(), hi.x(), width, box.x0, box.x1);
+  pixelRange(lo.y(), hi.y(), height, box.y0, box.y1);
   return box;
 }
 

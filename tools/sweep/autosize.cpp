@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "hw_model/report/cost_model.h"
-#include "hw_model/report/stats_file.h"
+#include "tools/sweep/sweep_results.h"
 
 namespace qacc {
 
@@ -40,8 +40,7 @@ struct Search {
     for (const std::string& s : o.scenes) {
       const nlohmann::ordered_json row = ev.evaluate(c, o.knobs, s);
       w = std::max(w, row["wrong_percent"].get<double>());
-      const double sp = row.contains("psnr_db") ? jsonNumberValue(row["psnr_db"]) : std::nan("");
-      p = std::isnan(sp) || std::isnan(p) ? std::nan("") : std::min(p, sp);
+      p = foldLowestPsnr(p, row);
       if (!o.target.meets(row)) {
         ok = false;
         break;  // one failing scene decides

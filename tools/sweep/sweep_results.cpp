@@ -91,8 +91,7 @@ nlohmann::ordered_json sweepFronts(const SweepResults& r) {
     a.pinholes += num(row, "pinholes");
     a.cycles += num(row, "cycles");
     // The lowest PSNR over the scenes; one scene without it makes the point's unknown (NaN).
-    const double psnr = num(row, "psnr_db");
-    a.psnr = std::isnan(psnr) || std::isnan(a.psnr) ? std::nan("") : std::min(a.psnr, psnr);
+    a.psnr = foldLowestPsnr(a.psnr, row);
     a.gates = num(row, "gates_kge");
     if (!target.empty() && !target.meets(row)) a.meets = false;
   }
@@ -272,6 +271,11 @@ SweepResults mergeSweepResults(const std::vector<SweepResults>& parts, const std
   }
   for (auto& [k, row] : rows) m.rows.push_back(row);
   return m;
+}
+
+double foldLowestPsnr(double lowest, const nlohmann::ordered_json& row) {
+  const double psnr = num(row, "psnr_db");
+  return std::isnan(psnr) || std::isnan(lowest) ? std::nan("") : std::min(lowest, psnr);
 }
 
 std::string lowestPsnrText(double psnr) {

@@ -29,6 +29,9 @@ nlohmann::ordered_json sweepFronts(const SweepResults& r);
 // "lowest PSNR 46.8 dB", "every image identical to the reference" (inf), or "PSNR not
 // measured" (NaN: a scene without it). A target on wrong pixels alone says nothing of colour.
 std::string lowestPsnrText(double psnr);
+// `lowest` (a lowest PSNR so far: inf before the first row) with the row's psnr_db folded in:
+// the lower of the two, NaN once a row lacks it (then the lowest is unknown).
+double foldLowestPsnr(double lowest, const nlohmann::ordered_json& row);
 // Columns that depend on the host (timing, cache state); everything else is a function of
 // the spec alone, so a merged sweep equals an unsharded one on the other columns.
 bool isHostColumn(const std::string& column);
