@@ -55,7 +55,7 @@ std::vector<CsgJob> buildJobs(const CsgFrame& csg, const FrameSetup& fs, const H
 }  // namespace
 
 void runCsgCyclePass(const CsgFrame& csg, const FrameSetup& fs, const HwConfig& cfg, int width, int height,
-                     ZBufferMemory& zb, int threads, HwStats& st) {
+                     ZBufferMemory& zb, int threads, MachineClock clock, HwStats& st) {
   st.csg.objects = csg.trees.size();
   if (csg.trees.empty()) return;
   const std::vector<CsgJob> jobs = buildJobs(csg, fs, cfg, width, height, threads, st);
@@ -88,7 +88,10 @@ void runCsgCyclePass(const CsgFrame& csg, const FrameSetup& fs, const HwConfig& 
   for (std::size_t p = 0; p < P; ++p)
     shading.emplace_back("shading_" + std::to_string(p), ShadingUnit::Params::from(cfg), wires, *toShading[p]);
   const std::uint64_t before = st.cycles;
-  const std::uint64_t cycles = runMachine(wires, st.fast_forwarded, issue, pipelines, list, sweep, zunit, shading);
+  const std::uint64_t cycles =
+      clock == MachineClock::EveryCycle
+          ? runMachine<MachineClock::EveryCycle>(wires, st.fast_forwarded, issue, pipelines, list, sweep, zunit, shading)
+          : runMachine(wires, st.fast_forwarded, issue, pipelines, list, sweep, zunit, shading);
   std::uint64_t delivered = 0;
   for (const ShadingUnit& u : shading) delivered += u.delivered();
   if (delivered != st.pixels.written - writtenBefore)

@@ -12,6 +12,7 @@
 #include "hw_model/datapath/zbuffer_memory.h"
 #include "hw_model/engines/csg_tile.h"
 #include "hw_model/engines/frame_setup.h"
+#include "hw_model/engines/machine_clock.h"
 #include "hw_model/report/hw_stats.h"
 
 namespace qacc {
@@ -19,8 +20,8 @@ namespace qacc {
 // Draws every csg object of the frame into the frame-sized `zb`; adds the pass's cycles
 // to stats.cycles and stats.csg.cycles, its counters to stats.pixels and stats.csg, and
 // its units' cycles to stats.units (the pipelines, Z-buffer and shading under their own
-// names; every unit idle while the other part of the frame runs).
+// names; every unit idle while the other part of the frame runs). `clock`: as renderHwCycle's.
 void runCsgCyclePass(const CsgFrame& csg, const FrameSetup& fs, const HwConfig& cfg, int width, int height,
-                     ZBufferMemory& zb, int threads, HwStats& stats);
+                     ZBufferMemory& zb, int threads, MachineClock clock, HwStats& stats);
 
 }  // namespace qacc

@@ -32,7 +32,7 @@ namespace {
 // 20 MB for molecule at 1920x1080), the units, the setups copied for a csg scene — is
 // released on return, before the CSG pass and the resolve allocate the frame buffer.
 void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs, const CsgFrame& csg,
-                  ZBufferMemory& zb, int nt, HwStats& st) {
+                  ZBufferMemory& zb, int nt, MachineClock clock, HwStats& st) {
   // The leaves of csg objects do not enter this machine: the CSG pass draws them after it
   // (csg_cycle_pass.h), with the scene-order tie rule, so the image equals hw's.
   FrameSetup timedCopy;
@@ -105,7 +105,11 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
   const auto runLoop = [&] {
     const auto loop0 = std::chrono::steady_clock::now();
     try {
-      runMachine(wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz, shading);
+      if (clock == MachineClock::EveryCycle)
+        runMachine<MachineClock::EveryCycle>(wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz,
+                                             shading);
+      else
+        runMachine(wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz, shading);
     } catch (...) {
       loopError = std::current_exception();
     }
@@ -150,7 +154,7 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
 
 }  // namespace
 
-HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
+HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads, MachineClock clock) {
   const auto t0 = std::chrono::steady_clock::now();
   const int nt = threads > 0 ? threads : omp_get_max_threads();
   HwRender out;
@@ -164,8 +168,8 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads) {
   st.overflow.add(fs.overflow);
   const CsgFrame csg(scene, cfg, scene.width, scene.height);
   ZBufferMemory zb(scene.width, scene.height);
-  runTimedPass(scene, cfg, fs, csg, zb, nt, st);
-  runCsgCyclePass(csg, fs, cfg, scene.width, scene.height, zb, nt, st);
+  runTimedPass(scene, cfg, fs, csg, zb, nt, clock, st);
+  runCsgCyclePass(csg, fs, cfg, scene.width, scene.height, zb, nt, clock, st);
   out.fb = resolveFrame(scene, cfg, fs, zb, nt, st);
   st.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -2,16 +2,20 @@
 // interface, setup, traversal, P pixel pipelines, Z-buffer, P shading units) ticks once per
 // modeled cycle; units talk through bounded channels that carry a latency, committed at the
 // end of each cycle by one registry (two-phase, so tick order does not matter); a full
-// channel stalls its producer; the frame ends when everything has drained. Cycles in which
-// nothing moves are skipped in one step (fast-forward to the next timed event). The
+// channel stalls its producer; the frame ends when everything has drained. Cycles that
+// cannot differ from the one before (nothing moves before the next timed event, or a unit
+// only waits on a full channel) are not ticked one by one: that tick's counts are repeated. The
 // arithmetic is the functional engine's (datapath/: setup arithmetic, pixel datapath via
 // the pixel trace, Z-buffer memory, shading of the final winners once drained): the image
 // is bit-identical to `hw`; this engine only adds time.
 #pragma once
 #include "hw_model/engines/functional_engine.h"
+#include "hw_model/engines/machine_clock.h"
 
 namespace qacc {
 
-HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads = 0);
+// `clock`: MachineClock::EveryCycle ticks every cycle (for tests: the same counts, slower).
+HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads = 0,
+                       MachineClock clock = MachineClock::Repeating);
 
 }  // namespace qacc

@@ -1,22 +1,26 @@
 // runMachine: the clock of hw-cycle. Ticks wired timed units (timing/unit.h) cycle by
-// cycle until no unit holds work and every channel is empty, jumping over cycles where
-// nothing moves to the next timed event (fast-forward). The units are passed by their
+// cycle until no unit holds work and every channel is empty. The units are passed by their
 // concrete types, so every tick is a direct call the compiler can inline into the loop.
 //
-// Cycles where nothing moves but some unit waits without a timed event of its own (stalled
-// on a full channel: a setup-bound frame, the host waiting on setup, traversal on the
-// pipelines) are not fast-forwarded: each is ticked and counted (stall, busy, idle; the
-// Z unit's conflicts and round-robin pointer advance). The clock does not tick them one by
-// one either: after such a cycle it asks every unit for the first cycle at which its tick
-// may differ (Unit::nextChange), ticks the next cycle as usual while noting every unit's
-// counters before and after, and adds that tick's counts once for each further cycle up to
-// that one (Unit::repeatTick): what ticking them would have counted, cycle for cycle.
+// Every cycle is counted as ticking it counts (busy, stall, idle per unit; the Z unit's
+// conflicts and round-robin pointer), but not every cycle is ticked. After a cycle where
+// nothing moved, the clock ticks the next cycle as usual while noting every unit's counters
+// before and after, and adds that tick's counts once for each further cycle in which no tick
+// may differ from it (Unit::repeatTick):
+//  - fast-forward: up to the next timed event of any unit (Unit::nextEvent: an item
+//    finishing, a transfer or a setup done, a bank freed); nothing moves before it;
+//  - stalled cycles: where some unit waits without a timed event of its own (on a full
+//    channel: the host on setup, traversal on the pipelines), up to the first cycle at which
+//    any unit's tick may differ (Unit::nextChange).
+// A unit that changes in a cycle the clock repeats is a logic error (thrown). Tests compare
+// every counter with the clock that ticks each cycle (MachineClock::EveryCycle).
 #pragma once
 #include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "hw_model/engines/machine_clock.h"
 #include "hw_model/report/hw_stats.h"
 #include "hw_model/timing/channel_registry.h"
 #include "hw_model/timing/unit.h"
@@ -51,22 +55,24 @@ void forEachUnit(F&& f, Groups&... groups) {
 
 // Ticks the units of `groups` (each a unit, a std::vector of units or a std::optional unit)
 // in the order given, every cycle. Returns the cycles the machine ran (wires.now() at the
-// end); adds the cycles skipped by fast-forward to `fastForwarded`. Throws
-// std::runtime_error on a deadlock.
-template <typename... Groups>
+// end); adds the cycles fast-forwarded to `fastForwarded`: after a quiet cycle, the cycles
+// before the next timed event, in which nothing moves (counted from the first one's tick).
+// Throws std::runtime_error on a deadlock.
+template <MachineClock kClock = MachineClock::Repeating, typename... Groups>
 std::uint64_t runMachine(ChannelRegistry& wires, std::uint64_t& fastForwarded, Groups&... groups) {
   // The frame ends with the first cycle after which no unit holds work and every FIFO is
   // empty. That state can only be entered by a cycle where something changed, and the
   // cycle after it changes nothing, so the check runs only on unchanged cycles: ending
   // there, the frame took one cycle less than the loop ran.
-  // The unchanged cycles in a row the clock ticks or repeats (a fast-forward jump counts as
-  // one) before it reports a deadlock.
+  // The unchanged cycles in a row the clock ticks or repeats (the cycles up to a timed
+  // event count as one) before it reports a deadlock.
   constexpr std::uint64_t kDeadlockCycles = 1000000;
   std::uint64_t quiet = 0;
   bool prevChanged = false;
   // Repeated ticks: when armed (repeatUntil != 0), this cycle's tick is counted and repeated
-  // up to cycle repeatUntil - 1.
+  // up to cycle repeatUntil - 1; `toEvent`: up to a timed event (a fast-forward).
   std::uint64_t repeatUntil = 0;
+  bool toEvent = false;
   std::vector<TickCounts> before;
   for (;;) {
     bool changed = false;
@@ -94,7 +100,24 @@ std::uint64_t runMachine(ChannelRegistry& wires, std::uint64_t& fastForwarded, G
       break;
     }
     prevChanged = false;
-    // Nothing moved: jump to the next timed event.
+    if (armed) {
+      // Cycles wires.now() .. repeatUntil - 1 would tick as this one did. Up to a timed
+      // event they count as one unchanged cycle; otherwise none is repeated past the
+      // deadlock limit of unchanged cycles, so a deadlock is reported at the same cycle.
+      if (!toEvent && ++quiet > kDeadlockCycles) machine_run_detail::throwDeadlock(wires.now());
+      const std::uint64_t n =
+          toEvent ? repeatUntil - wires.now() : std::min(repeatUntil - wires.now(), kDeadlockCycles - quiet);
+      if (n > 0) {
+        std::size_t i = 0;
+        forEachUnit([&](auto& u) { u.repeatTick(before[i++], n); }, groups...);
+        wires.skipTo(wires.now() + n);
+        if (!toEvent) quiet += n;
+      }
+      repeatUntil = 0;
+      toEvent = false;
+      continue;
+    }
+    // Nothing moved: the next timed event.
     std::uint64_t next = Unit::kNoEvent;
     forEachUnit(
         [&](auto& u) {
@@ -103,25 +126,14 @@ std::uint64_t runMachine(ChannelRegistry& wires, std::uint64_t& fastForwarded, G
         },
         groups...);
     if (next == Unit::kNoEvent || ++quiet > kDeadlockCycles) machine_run_detail::throwDeadlock(wires.now());
+    if constexpr (kClock == MachineClock::EveryCycle) continue;
     if (next > wires.now()) {
-      const std::uint64_t skip = next - wires.now();
-      forEachUnit([&](auto& u) { u.skip(skip, u.holdsWork()); }, groups...);
-      fastForwarded += skip;
-      wires.skipTo(next);
-      repeatUntil = 0;
-      continue;
-    }
-    if (armed) {
-      // Cycles wires.now() .. repeatUntil - 1 would tick as this one did (none past the
-      // deadlock limit of unchanged cycles, so a deadlock is reported at the same cycle).
-      const std::uint64_t n = std::min(repeatUntil - wires.now(), kDeadlockCycles - quiet);
-      if (n > 0) {
-        std::size_t i = 0;
-        forEachUnit([&](auto& u) { u.repeatTick(before[i++], n); }, groups...);
-        quiet += n;
-        wires.skipTo(wires.now() + n);
+      // Nothing moves before it (fast-forwarded cycles): tick wires.now(), repeat it until then.
+      fastForwarded += next - wires.now();
+      if (next > wires.now() + 1) {
+        repeatUntil = next;
+        toEvent = true;
       }
-      repeatUntil = 0;
       continue;
     }
     // The first cycle from now on at which any tick may differ from this one's.

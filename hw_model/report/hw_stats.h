@@ -70,7 +70,7 @@ struct HwStats {
   PixelCounters pixels;
   OverflowCounters overflow;
   std::uint64_t cycles = 0;          // hw-cycle only (0 for hw)
-  std::uint64_t fast_forwarded = 0;  // cycles skipped by fast-forward
+  std::uint64_t fast_forwarded = 0;  // cycles before a timed event in which nothing moved (counted from one tick)
   std::vector<UnitStats> units;
   double clock_mhz = 0;
   double host_seconds = 0;           // wall time of the render

@@ -6,10 +6,11 @@
 // Every unit derives from Unit (its counters) and has, by name, what the clock
 // (engines/machine_run.h) calls on it:
 //  - bool tick(std::uint64_t now): one cycle; true when the unit changed any state (the
-//    clock fast-forwards over cycles where nothing happens);
+//    clock repeats one tick's counts over cycles where nothing happens);
 //  - bool holdsWork() const: true while the unit holds work (in flight or buffered);
 //  - std::uint64_t nextEvent() const: the earliest future cycle at which the unit will act
-//    without new input (Unit::kNoEvent: none; Unit's own nextEvent for a unit that never does);
+//    without new input, or count its tick differently (the clock fast-forwards to it;
+//    Unit::kNoEvent: none; Unit's own nextEvent for a unit that never does);
 //  - std::uint64_t nextChange(std::uint64_t now) const: for a unit whose tick in the cycle
 //    before `now` changed nothing, the first cycle from `now` on at which its tick may do
 //    anything else — change state, or count the cycle differently (busy / stall / idle) —
@@ -54,11 +55,6 @@ class Unit {
     stats_.busy += n * (stats_.busy - before.busy);
     stats_.stall += n * (stats_.stall - before.stall);
     stats_.idle += n * (stats_.idle - before.idle);
-  }
-  // Accounts `n` cycles skipped by fast-forward (nothing moved: busy if holding work).
-  void skip(std::uint64_t n, bool holdingWork) {
-    if (holdingWork) stats_.busy += n;
-    else stats_.idle += n;
   }
   const UnitStats& stats() const { return stats_; }
   // Takes back one idle cycle (the engine ticked every unit once past the end of the frame).
