@@ -130,10 +130,8 @@ std::uint64_t runMachine(ChannelRegistry& wires, std::uint64_t& fastForwarded, G
     if (next > wires.now()) {
       // Nothing moves before it (fast-forwarded cycles): tick wires.now(), repeat it until then.
       fastForwarded += next - wires.now();
-      if (next > wires.now() + 1) {
-        repeatUntil = next;
-        toEvent = true;
-      }
+      repeatUntil = next;
+      toEvent = true;
       continue;
     }
     // The first cycle from now on at which any tick may differ from this one's.

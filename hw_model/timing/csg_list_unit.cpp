@@ -39,8 +39,10 @@ bool CsgListUnit::tick(std::uint64_t now) {
 
 std::uint64_t CsgListUnit::nextEvent() const {
   std::uint64_t t = std::numeric_limits<std::uint64_t>::max();
+  // A port's insertion done: it takes its next interval, or the unit's tick counts idle from
+  // then on when no port is busy (holdsWork), whether or not an interval waits.
   for (std::size_t p = 0; p < in_.size(); ++p)
-    if (in_[p]->ready() && busyUntil_[p] > now_) t = std::min(t, busyUntil_[p]);
+    if (busyUntil_[p] > now_) t = std::min(t, busyUntil_[p]);
   return t;
 }
 

@@ -48,6 +48,8 @@ class HierarchicalZUnit final : public Unit {
     return false;  // the tile memory's state moves no token
   }
   bool holdsWork() const { return false; }  // nothing waits on a tile update
+  // The next tile update due: its tick writes the tile memory and counts busy.
+  std::uint64_t nextEvent() const { return pending_.empty() ? kNoEvent : pending_.front().due; }
   // Unchanged: the next tile update due (lookups come from traversal, which reports them).
   std::uint64_t nextChange(std::uint64_t now) const {
     return pending_.empty() ? kNoEvent : std::max(now, pending_.front().due);
