@@ -1,6 +1,7 @@
 #include "raster/image/frame_buffer.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace qacc {
 
@@ -19,6 +20,21 @@ FrameBuffer FrameBuffer::uninitialised(int w, int h) {
   return fb;
 }
 
+namespace {
+
+// n pixels of colour rgb from `out` (3 bytes each): 16 pixels at a time from a 48-byte
+// pattern, which the compiler stores in 16-byte words (a byte at a time took a third of
+// clearRect's time on a 1920x1080 frame).
+void fillRgb(std::uint8_t* out, std::size_t n, const std::array<std::uint8_t, 3>& rgb) {
+  std::uint8_t pattern[48];
+  for (std::size_t i = 0; i < 48; ++i) pattern[i] = rgb[i % 3];
+  std::size_t bytes = 3 * n;
+  for (; bytes >= 48; bytes -= 48, out += 48) std::memcpy(out, pattern, 48);
+  std::memcpy(out, pattern, bytes);
+}
+
+}  // namespace
+
 void FrameBuffer::clearRect(int x0, int y0, int x1, int y1, const std::array<std::uint8_t, 3>& bg) {
   if (x1 <= x0) return;
   const std::size_t n = std::size_t(x1 - x0);
@@ -27,12 +43,7 @@ void FrameBuffer::clearRect(int x0, int y0, int x1, int y1, const std::array<std
     std::fill_n(depth.begin() + std::ptrdiff_t(row), n, std::numeric_limits<double>::infinity());
     std::fill_n(object.begin() + std::ptrdiff_t(row), n, -1);
     std::fill_n(primitive.begin() + std::ptrdiff_t(row), n, -1);
-    std::uint8_t* c = color.data.data() + row * 3;
-    for (std::size_t i = 0; i < n; ++i, c += 3) {
-      c[0] = bg[0];
-      c[1] = bg[1];
-      c[2] = bg[2];
-    }
+    fillRgb(color.data.data() + row * 3, n, bg);
   }
 }
 

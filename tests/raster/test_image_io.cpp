@@ -62,6 +62,23 @@ TEST(ImageIO, ReadingAMissingFileThrows) {
   EXPECT_THROW(readPfm("/nonexistent/x.pfm"), std::runtime_error);
 }
 
+TEST(FrameBuffer, ClearRectFillsRowsOfEveryLengthWithTheColourInOrder) {
+  // The colour is written 16 pixels at a time, then the rest: rows of 0 to 40 pixels from
+  // every start, each channel in its place, nothing written outside.
+  for (int x0 = 0; x0 < 3; ++x0)
+    for (int n = 0; n <= 40; ++n) {
+      FrameBuffer fb = FrameBuffer::uninitialised(45, 2);
+      fb.clearRect(0, 0, 45, 2, {0, 0, 0});
+      fb.clearRect(x0, 1, x0 + n, 2, {10, 20, 30});
+      for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 45; ++x) {
+          const bool in = y == 1 && x >= x0 && x < x0 + n;
+          for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(fb.color.at(x, y, c), in ? 10 * (c + 1) : 0) << "start " << x0 << ", length " << n << ", x " << x;
+        }
+    }
+}
+
 TEST(FrameBuffer, ClearRectWritesTheBackgroundInItsRectangleOnly) {
   FrameBuffer fb = FrameBuffer::uninitialised(5, 4);
   fb.clearRect(0, 0, 5, 4, {1, 2, 3});
