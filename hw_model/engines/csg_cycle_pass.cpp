@@ -89,9 +89,7 @@ void runCsgCyclePass(const CsgFrame& csg, const FrameSetup& fs, const HwConfig& 
     shading.emplace_back("shading_" + std::to_string(p), ShadingUnit::Params::from(cfg), wires, *toShading[p]);
   const std::uint64_t before = st.cycles;
   const std::uint64_t cycles =
-      clock == MachineClock::EveryCycle
-          ? runMachine<MachineClock::EveryCycle>(wires, st.fast_forwarded, issue, pipelines, list, sweep, zunit, shading)
-          : runMachine(wires, st.fast_forwarded, issue, pipelines, list, sweep, zunit, shading);
+      runMachine(clock, wires, st.fast_forwarded, issue, pipelines, list, sweep, zunit, shading);
   std::uint64_t delivered = 0;
   for (const ShadingUnit& u : shading) delivered += u.delivered();
   if (delivered != st.pixels.written - writtenBefore)

@@ -105,11 +105,7 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
   const auto runLoop = [&] {
     const auto loop0 = std::chrono::steady_clock::now();
     try {
-      if (clock == MachineClock::EveryCycle)
-        runMachine<MachineClock::EveryCycle>(wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz,
-                                             shading);
-      else
-        runMachine(wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz, shading);
+      runMachine(clock, wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz, shading);
     } catch (...) {
       loopError = std::current_exception();
     }

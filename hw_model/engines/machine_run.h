@@ -147,6 +147,13 @@ std::uint64_t runMachine(ChannelRegistry& wires, std::uint64_t& fastForwarded, G
   return wires.now();
 }
 
+// runMachine with the clock chosen at run time.
+template <typename... Groups>
+std::uint64_t runMachine(MachineClock clock, ChannelRegistry& wires, std::uint64_t& fastForwarded, Groups&... groups) {
+  return clock == MachineClock::EveryCycle ? runMachine<MachineClock::EveryCycle>(wires, fastForwarded, groups...)
+                                           : runMachine<MachineClock::Repeating>(wires, fastForwarded, groups...);
+}
+
 // Appends every unit's counters to `out`, in the order given.
 template <typename... Groups>
 void appendUnitStats(std::vector<UnitStats>& out, Groups&... groups) {

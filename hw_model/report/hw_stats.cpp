@@ -186,6 +186,14 @@ nlohmann::ordered_json toJ(const HwStats& s) {
 
 std::string HwStats::toJson() const { return toJ(*this).dump(2) + "\n"; }
 
+std::string HwStats::countsJson() const {
+  nlohmann::ordered_json j = toJ(*this);
+  for (const char* k : {"host_seconds", "host_cycles_per_second", "slowdown", "loop_seconds", "loop_cycles_per_second",
+                        "trace_seconds", "threads"})
+    j.erase(k);
+  return j.dump(2) + "\n";
+}
+
 std::string HwStats::toCsv() const { return jsonToCsvRow(toJ(*this)); }
 
 void HwStats::write(const std::string& path) const { writeStatsFiles(path, toJ(*this)); }

@@ -112,6 +112,9 @@ struct HwStats {
   HierarchicalZCounters hiz;           // the hierarchical Z unit (enabled: HwConfig::hierarchical_z)
 
   std::string toJson() const;
+  // toJson without what depends on the host (its times and rates, the slowdown, the thread
+  // count): every count of the run, which another run of the same frame must reproduce.
+  std::string countsJson() const;
   std::string toCsv() const;  // one header line + one value line
   // Writes path (JSON) and path with extension replaced by .csv.
   void write(const std::string& path) const;

@@ -40,14 +40,8 @@ Scene loneSphereScene(int w, int h) {
 }
 
 // Every count of a run (cycles, units, pixels, overflows, ...) without its host times and
-// thread count.
-nlohmann::json counts(const HwStats& st) {
-  nlohmann::json j = nlohmann::json::parse(st.toJson());
-  for (const char* k : {"host_seconds", "host_cycles_per_second", "slowdown", "loop_seconds", "loop_cycles_per_second",
-                        "trace_seconds", "threads"})
-    j.erase(k);
-  return j;
-}
+// thread count (HwStats::countsJson).
+nlohmann::json counts(const HwStats& st) { return nlohmann::json::parse(st.countsJson()); }
 
 std::uint64_t totalStalls(const HwStats& st) {
   std::uint64_t n = 0;
