@@ -11,7 +11,7 @@
 namespace qacc {
 
 std::uint64_t resolveRow(const HwConfig& cfg, const FrameSetup& fs, int x0, int x1, int y, const ZEntry* row,
-                         const std::array<std::uint8_t, 3>& background, FrameBuffer& fb, OverflowCounter& ovf) {
+                         const FrameBuffer::Background& background, FrameBuffer& fb, OverflowCounter& ovf) {
   std::uint64_t written = 0;
   std::array<std::uint8_t, 3> rgb[256];
   for (int x = x0; x < x1;) {
@@ -45,7 +45,7 @@ std::uint64_t resolveRow(const HwConfig& cfg, const FrameSetup& fs, int x0, int 
 
 FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs, const ZBufferMemory& zb,
                          int threads, HwStats& stats) {
-  const auto background = toSrgb8(scene.background);
+  const FrameBuffer::Background background(toSrgb8(scene.background));
   FrameBuffer fb = FrameBuffer::uninitialised(scene.width, scene.height);  // every pixel written below, in parallel
   const int nt = threads > 0 ? threads : omp_get_max_threads();
   std::uint64_t distinct = 0;

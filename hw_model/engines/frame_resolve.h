@@ -20,7 +20,7 @@ namespace qacc {
 // winner cleared to the background (so that every pixel is written once, with no clear
 // before); returns the pixels with a winner.
 std::uint64_t resolveRow(const HwConfig& cfg, const FrameSetup& fs, int x0, int x1, int y, const ZEntry* row,
-                         const std::array<std::uint8_t, 3>& background, FrameBuffer& fb, OverflowCounter& ovf);
+                         const FrameBuffer::Background& background, FrameBuffer& fb, OverflowCounter& ovf);
 
 // Shades every winner of a frame-sized Z-buffer; counts the distinct pixels written.
 FrameBuffer resolveFrame(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs, const ZBufferMemory& zb,

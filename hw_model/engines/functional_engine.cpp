@@ -55,7 +55,7 @@ HwRender renderHw(const Scene& scene, const HwConfig& cfg, int threads) {
   constexpr int kTile = TileBinner::kTileSize;
   // The frame buffer is not cleared up front: each tile writes each of its pixels once (in
   // parallel, first touching its pages), its winners shaded and the rest the background.
-  const auto background = toSrgb8(scene.background);
+  const FrameBuffer::Background background(toSrgb8(scene.background));
   FrameBuffer fb = FrameBuffer::uninitialised(W, H);
   const int ntiles = bins.tiles();
   std::vector<PixelCounters> pc(static_cast<std::size_t>(ntiles));

@@ -5,7 +5,15 @@
 
 namespace qacc {
 
-FrameBuffer::FrameBuffer(int w, int h, const std::array<std::uint8_t, 3>& bg) : FrameBuffer(uninitialised(w, h)) {
+FrameBuffer::Background::Background(const std::array<std::uint8_t, 3>& c) : rgb(c) {
+  for (std::size_t i = 0; i < 48; i += 3) {
+    pattern[i] = c[0];
+    pattern[i + 1] = c[1];
+    pattern[i + 2] = c[2];
+  }
+}
+
+FrameBuffer::FrameBuffer(int w, int h, const Background& bg) : FrameBuffer(uninitialised(w, h)) {
   clearRect(0, 0, w, h, bg);
 }
 
@@ -22,12 +30,11 @@ FrameBuffer FrameBuffer::uninitialised(int w, int h) {
 
 namespace {
 
-// n pixels of colour rgb from `out` (3 bytes each): 16 pixels at a time from a 48-byte
-// pattern, which the compiler stores in 16-byte words (a byte at a time took a third of
-// clearRect's time on a 1920x1080 frame).
-void fillRgb(std::uint8_t* out, std::size_t n, const std::array<std::uint8_t, 3>& rgb) {
-  std::uint8_t pattern[48];
-  for (std::size_t i = 0; i < 48; ++i) pattern[i] = rgb[i % 3];
+// n pixels of the background colour from `out` (3 bytes each): 16 pixels at a time from its
+// 48-byte pattern, which the compiler stores in 16-byte words (a byte at a time took a third
+// of clearRect's time on a 1920x1080 frame).
+void fillRgb(std::uint8_t* out, std::size_t n, const FrameBuffer::Background& bg) {
+  const std::uint8_t* pattern = bg.pattern;
   std::size_t bytes = 3 * n;
   for (; bytes >= 48; bytes -= 48, out += 48) std::memcpy(out, pattern, 48);
   std::memcpy(out, pattern, bytes);
@@ -35,7 +42,7 @@ void fillRgb(std::uint8_t* out, std::size_t n, const std::array<std::uint8_t, 3>
 
 }  // namespace
 
-void FrameBuffer::clearRect(int x0, int y0, int x1, int y1, const std::array<std::uint8_t, 3>& bg) {
+void FrameBuffer::clearRect(int x0, int y0, int x1, int y1, const Background& bg) {
   if (x1 <= x0) return;
   const std::size_t n = std::size_t(x1 - x0);
   for (int y = y0; y < y1; ++y) {

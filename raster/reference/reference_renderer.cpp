@@ -117,7 +117,7 @@ FrameBuffer renderReference(const Scene& scene, int threads, ReferenceStats* sta
   // winner of each pixel (item, cap, and the exact surface's normal or the CSG leaf) is
   // tile-local: the tile is shaded when its last item is drawn, so no frame-sized record of
   // the winners is kept (16.6 MB at 1920x1080, 50 MB more with an exact surface).
-  const auto background = toSrgb8(scene.background);
+  const FrameBuffer::Background background(toSrgb8(scene.background));
   FrameBuffer fb = FrameBuffer::uninitialised(W, H);
   constexpr int T = TileBinner::kTileSize;
   const bool anyExact = !scene.exact_surfaces.empty(), anyCsg = !csgTrees.empty();
