@@ -1,7 +1,8 @@
 // Fuzz target: a scene rendered tiny (24x18) by every engine. A scene the loader accepts must
 // render without a crash or sanitizer report in the reference, hw and hw-cycle, and hw and
 // hw-cycle must produce the same image (they are bit-identical by construction); hw-cycle's
-// clock, which repeats one tick's counts over cycles that cannot differ, must count what
+// clocks — the item clock (engines/item_clock.h, the default configuration's) and the ticking
+// clock that repeats one tick's counts over cycles that cannot differ — must count what
 // ticking every cycle counts (MachineClock::EveryCycle: every count of HwStats::countsJson —
 // cycles, every unit's busy / stall / idle / items, pixel, overflow, hierarchical Z and CSG
 // counters). The facets
@@ -95,11 +96,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const qacc::HwRender a = qacc::renderHw(scene, cfg, 1);
   const qacc::HwRender b = qacc::renderHwCycle(scene, cfg, 1);
   if (!(a.fb.color.data == b.fb.color.data) || a.fb.object != b.fb.object) std::abort();
+  // The engine's clock (the item clock for the default configuration), the ticking clock
+  // that repeats, and the one that ticks every cycle: every count must agree but the cycles
+  // the repeating clock fast-forwarded (the other two fast-forward none).
+  qacc::HwRender r = qacc::renderHwCycle(scene, cfg, 1, qacc::MachineClock::Repeating);
   qacc::HwRender c = qacc::renderHwCycle(scene, cfg, 1, qacc::MachineClock::EveryCycle);
-  // The clock that ticks every cycle fast-forwards none; every other count must agree.
-  if (c.stats.fast_forwarded != 0) std::abort();
-  c.stats.fast_forwarded = b.stats.fast_forwarded;
-  if (b.stats.countsJson() != c.stats.countsJson() || !(b.fb.color.data == c.fb.color.data)) std::abort();
+  if (c.stats.fast_forwarded != 0 || b.stats.simulator_clock != "items") std::abort();
+  c.stats.fast_forwarded = r.stats.fast_forwarded;
+  qacc::HwStats items = b.stats;
+  items.fast_forwarded = r.stats.fast_forwarded;
+  if (items.countsJson() != c.stats.countsJson() || r.stats.countsJson() != c.stats.countsJson() ||
+      !(b.fb.color.data == c.fb.color.data) || !(r.fb.color.data == c.fb.color.data))
+    std::abort();
   tessellateLikeFacets(scene);
   ++counts.drawn;
   return 0;

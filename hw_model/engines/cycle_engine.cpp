@@ -13,6 +13,7 @@
 #include "hw_model/engines/csg_cycle_pass.h"
 #include "hw_model/engines/frame_resolve.h"
 #include "hw_model/engines/frame_setup.h"
+#include "hw_model/engines/item_clock.h"
 #include "hw_model/engines/machine_run.h"
 #include "hw_model/engines/pixel_trace.h"
 #include "hw_model/timing/channel_registry.h"
@@ -100,12 +101,18 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
   // others fill the trace ahead of it (the traversal unit waits for a primitive not yet
   // filled); the loop's time is its wall time less those waits. The trace's time is from
   // the planning to the last pixel filled, so with threads the two overlap.
+  // The item clock, where it applies, computes the same cycles and counts without ticking
+  // these units (item_clock.h).
+  const bool byItems = clock == MachineClock::Items && itemClockApplies(cfg);
+  st.simulator_clock = byItems ? "items" : clock == MachineClock::EveryCycle ? "every cycle" : "repeated ticks";
+  ItemClockRun items;
   double loopSeconds = 0, traceDone = 0;
   std::exception_ptr loopError;
   const auto runLoop = [&] {
     const auto loop0 = std::chrono::steady_clock::now();
     try {
-      runMachine(clock, wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz, shading);
+      if (byItems) items = runItemClock(cfg, timedSetups, trace, zb, st.pixels);
+      else runMachine(clock, wires, st.fast_forwarded, host, setup, traversal, pipelines, zunit, hiz, shading);
     } catch (...) {
       loopError = std::current_exception();
     }
@@ -131,20 +138,28 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
   trace.finishFill();
   st.overflow.add(trace.overflow);
   st.trace_seconds = traceDone;
-  st.cycles = wires.now();
   st.loop_seconds = loopSeconds - trace.waitSeconds();
-  appendUnitStats(st.units, host, setup, traversal, pipelines, zunit, hiz, shading);
-  if (hizUnit) {
-    st.hiz = hizUnit->counters;
-    st.hiz.enabled = true;
+  std::uint64_t delivered = 0, culled = 0;
+  if (byItems) {
+    st.cycles = items.cycles;
+    st.units.insert(st.units.end(), items.units.begin(), items.units.end());
+    delivered = items.delivered;
+    culled = items.culled;
+  } else {
+    st.cycles = wires.now();
+    appendUnitStats(st.units, host, setup, traversal, pipelines, zunit, hiz, shading);
+    if (hizUnit) {
+      st.hiz = hizUnit->counters;
+      st.hiz.enabled = true;
+    }
+    for (const ShadingUnit& u : shading) delivered += u.delivered();
+    culled = setup.culled();
   }
-  std::uint64_t delivered = 0;
-  for (const ShadingUnit& u : shading) delivered += u.delivered();
   if (delivered != st.pixels.written)
     throw std::logic_error("hw-cycle: shading delivered " + std::to_string(delivered) + " of " +
                            std::to_string(st.pixels.written) + " pixels");
-  if (setup.culled() != st.culled_at_host)
-    throw std::logic_error("hw-cycle: setup culled " + std::to_string(setup.culled()) + " of " +
+  if (culled != st.culled_at_host)
+    throw std::logic_error("hw-cycle: setup culled " + std::to_string(culled) + " of " +
                            std::to_string(st.culled_at_host) + " primitives");
 }
 

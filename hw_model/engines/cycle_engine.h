@@ -16,6 +16,6 @@ namespace qacc {
 
 // `clock`: MachineClock::EveryCycle ticks every cycle (for tests: the same counts, slower).
 HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads = 0,
-                       MachineClock clock = MachineClock::Repeating);
+                       MachineClock clock = MachineClock::Items);
 
 }  // namespace qacc

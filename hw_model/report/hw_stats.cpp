@@ -126,6 +126,7 @@ nlohmann::ordered_json toJ(const HwStats& s) {
                            {"issue_cycles_saved", s.hiz.issue_cycles_saved}};
   j["cycles"] = s.cycles;
   j["fast_forwarded_cycles"] = s.fast_forwarded;
+  if (!s.simulator_clock.empty()) j["simulator_clock"] = s.simulator_clock;
   j["clock_mhz"] = s.clock_mhz;
   const double ft = s.frameSeconds();
   j["frame_time_ms"] = ft * 1e3;
@@ -189,7 +190,7 @@ std::string HwStats::toJson() const { return toJ(*this).dump(2) + "\n"; }
 std::string HwStats::countsJson() const {
   nlohmann::ordered_json j = toJ(*this);
   for (const char* k : {"host_seconds", "host_cycles_per_second", "slowdown", "loop_seconds", "loop_cycles_per_second",
-                        "trace_seconds", "threads"})
+                        "trace_seconds", "threads", "simulator_clock"})
     j.erase(k);
   return j.dump(2) + "\n";
 }

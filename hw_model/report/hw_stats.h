@@ -71,6 +71,10 @@ struct HwStats {
   OverflowCounters overflow;
   std::uint64_t cycles = 0;          // hw-cycle only (0 for hw)
   std::uint64_t fast_forwarded = 0;  // cycles before a timed event in which nothing moved (counted from one tick)
+  // How hw-cycle's simulator went through the main pass's cycles (not a count: the same
+  // counts either way): "items" (engines/item_clock.h), "repeated ticks" or "every cycle"
+  // (engines/machine_run.h); empty for hw.
+  std::string simulator_clock;
   std::vector<UnitStats> units;
   double clock_mhz = 0;
   double host_seconds = 0;           // wall time of the render

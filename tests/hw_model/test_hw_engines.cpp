@@ -100,29 +100,34 @@ TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCounts) {
     for (const auto& e : fs::directory_iterator(d))
       if (e.path().extension() == ".json" && !leftOutOfSanitizedSweeps(e.path().stem().string()))
         scenes.push_back(e.path());
-  int runs = 0, fastForwarded = 0, csgRuns = 0;
+  int runs = 0, fastForwarded = 0, csgRuns = 0, itemRuns = 0;
   for (const fs::path& path : scenes) {
     Scene scene = loadScene(path.string());
     scene.width = 160;
     scene.height = 120;
     for (const auto& [n, cfg] : configs) {
-      const std::string what = path.filename().string() + ", " + n;
-      const HwRender a = renderHwCycle(scene, cfg, 1);
       const HwRender b = renderHwCycle(scene, cfg, 1, MachineClock::EveryCycle);
-      nlohmann::json ca = counts(a.stats), cb = counts(b.stats);
-      EXPECT_EQ(cb["fast_forwarded_cycles"], 0) << what;
-      fastForwarded += ca["fast_forwarded_cycles"].get<std::uint64_t>() > 0;
-      ca.erase("fast_forwarded_cycles");
+      nlohmann::json cb = counts(b.stats);
+      EXPECT_EQ(cb["fast_forwarded_cycles"], 0);
       cb.erase("fast_forwarded_cycles");
-      EXPECT_EQ(ca, cb) << what;
-      expectIdentical(a.fb, b.fb, what);
+      for (const MachineClock clock : {MachineClock::Items, MachineClock::Repeating}) {
+        const HwRender a = renderHwCycle(scene, cfg, 1, clock);
+        const std::string what = path.filename().string() + ", " + n + ", " + a.stats.simulator_clock;
+        nlohmann::json ca = counts(a.stats);
+        if (clock == MachineClock::Repeating) fastForwarded += ca["fast_forwarded_cycles"].get<std::uint64_t>() > 0;
+        itemRuns += a.stats.simulator_clock == "items";
+        ca.erase("fast_forwarded_cycles");
+        EXPECT_EQ(ca, cb) << what;
+        expectIdentical(a.fb, b.fb, what);
+      }
       ++runs;
-      csgRuns += a.stats.csg.cycles > 0;
+      csgRuns += b.stats.csg.cycles > 0;
     }
   }
   EXPECT_GE(runs, 15);
   EXPECT_GE(csgRuns, 9) << "the CSG pass has its own machine on the same clock";
   EXPECT_GE(fastForwarded, runs / 2) << "the runs must exercise the fast-forward";
+  EXPECT_GE(itemRuns, runs / 2) << "the item clock applies to most shipped configurations";
 }
 
 TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCountsUnderRandomTimings) {
@@ -138,7 +143,7 @@ TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCountsUnderRandomTimings) {
     scenes.back().height = 48;
   }
   const int trials = kSanitizedBuild ? 8 : 40;
-  int sharedBanks = 0;
+  int sharedBanks = 0, itemRuns = 0;
   for (int seed = 1; seed <= trials; ++seed) {
     std::mt19937 rng{std::uint32_t(seed)};
     const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
@@ -165,17 +170,22 @@ TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCountsUnderRandomTimings) {
     checkHwConfig(cfg, "random timing " + std::to_string(seed));
     sharedBanks += cfg.zbuffer_banks % cfg.pipelines != 0;
     for (const Scene& scene : scenes) {
-      const std::string what = scene.name + ", seed " + std::to_string(seed);
-      const HwRender a = renderHwCycle(scene, cfg, 1);
       const HwRender b = renderHwCycle(scene, cfg, 1, MachineClock::EveryCycle);
-      nlohmann::json ca = counts(a.stats), cb = counts(b.stats);
-      ca.erase("fast_forwarded_cycles");
+      nlohmann::json cb = counts(b.stats);
       cb.erase("fast_forwarded_cycles");
-      ASSERT_EQ(ca, cb) << what;
-      expectIdentical(a.fb, b.fb, what);
+      for (const MachineClock clock : {MachineClock::Items, MachineClock::Repeating}) {
+        const HwRender a = renderHwCycle(scene, cfg, 1, clock);
+        const std::string what = scene.name + ", seed " + std::to_string(seed) + ", " + a.stats.simulator_clock;
+        itemRuns += a.stats.simulator_clock == "items";
+        nlohmann::json ca = counts(a.stats);
+        ca.erase("fast_forwarded_cycles");
+        ASSERT_EQ(ca, cb) << what;
+        expectIdentical(a.fb, b.fb, what);
+      }
     }
   }
   EXPECT_GT(sharedBanks, 0) << "some trials must share banks between pipelines (the round-robin decides)";
+  EXPECT_GE(itemRuns, trials / 2) << "the item clock must apply in some trials";
 }
 
 TEST(HwEngines, MinimalAndWideConfigurationsAlsoBitIdentical) {

@@ -1,0 +1,403 @@
+#include "hw_model/engines/item_clock.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "hw_model/datapath/screen_interleave.h"
+#include "hw_model/timing/host_interface_unit.h"
+#include "hw_model/timing/pixel_pipeline_unit.h"
+#include "hw_model/timing/setup_unit.h"
+#include "hw_model/timing/shading_unit.h"
+#include "hw_model/timing/traversal_unit.h"
+#include "hw_model/timing/zbuffer_unit.h"
+
+namespace qacc {
+
+bool itemClockApplies(const HwConfig& cfg) {
+  return !cfg.hierarchical_z && cfg.pipelines >= 1 && cfg.pipelines <= 64 && cfg.zbuffer_banks % cfg.pipelines == 0;
+}
+
+namespace {
+
+constexpr std::uint64_t kNone = ~std::uint64_t(0);
+
+// What a unit's tick did in each cycle, for the cycles not yet counted: changed anything,
+// waited on an output (a full channel, a busy bank), holds work after the tick. A ring over
+// the cycles from the first one not counted, grown when an event lies further ahead.
+class CycleFlags {
+ public:
+  static constexpr std::uint8_t kChanged = 1, kStalled = 2, kHolding = 4;
+  CycleFlags() : ring_(kInitial, 0), mask_(kInitial - 1) {}
+  void mark(std::uint64_t t, std::uint8_t f) {
+    reach(t);
+    ring_[t & mask_] |= f;
+  }
+  void markRange(std::uint64_t a, std::uint64_t b, std::uint8_t f) {
+    if (a >= b) return;
+    reach(b - 1);
+    segments(a, b, [f](std::uint8_t* p, std::size_t n) {
+      for (std::size_t i = 0; i < n; ++i) p[i] |= f;
+    });
+  }
+  // Counts the cycles before t as the unit's tick counts them (Unit::countCycle: changed →
+  // busy, else waited → stall, else holding → busy, else idle), and forgets them. Eight
+  // cycles a word: each flag is bit 0, 1 or 2 of its cycle's byte.
+  void count(std::uint64_t t, UnitStats& u) {
+    if (t <= base_) return;
+    segments(base_, t, [&u](std::uint8_t* p, std::size_t n) {
+      constexpr std::uint64_t kLow = 0x0101010101010101ull;
+      std::size_t i = 0;
+      for (; i + 8 <= n; i += 8) {
+        std::uint64_t w;
+        std::memcpy(&w, p + i, 8);
+        const std::uint64_t c = w & kLow, s = (w >> 1) & kLow, h = (w >> 2) & kLow;
+        u.busy += std::uint64_t(__builtin_popcountll(c | (h & ~s)));
+        u.stall += std::uint64_t(__builtin_popcountll(s & ~c));
+      }
+      for (; i < n; ++i) {
+        const std::uint8_t f = p[i];
+        if (f & kChanged) ++u.busy;
+        else if (f & kStalled) ++u.stall;
+        else if (f & kHolding) ++u.busy;
+      }
+      std::memset(p, 0, n);
+    });
+    base_ = t;
+  }
+
+ private:
+  static constexpr std::size_t kInitial = 4096;  // a power of two
+  // Calls f(pointer, length) on the ring's contiguous pieces of cycles [a, b).
+  template <typename F>
+  void segments(std::uint64_t a, std::uint64_t b, F&& f) {
+    while (a < b) {
+      const std::size_t i = std::size_t(a & mask_);
+      const std::size_t n = std::size_t(std::min<std::uint64_t>(b - a, ring_.size() - i));
+      f(ring_.data() + i, n);
+      a += n;
+    }
+  }
+  void reach(std::uint64_t t) {
+    if (t < base_) throw std::logic_error("item clock: an event before the cycles already counted");
+    if (t - base_ <= mask_) return;
+    std::size_t n = mask_ + 1;
+    while (t - base_ >= n) n *= 2;
+    std::vector<std::uint8_t> bigger(n, 0);
+    for (std::uint64_t c = base_; c < base_ + mask_ + 1; ++c) bigger[c & (n - 1)] = ring_[c & mask_];
+    ring_.swap(bigger);
+    mask_ = n - 1;
+  }
+  std::vector<std::uint8_t> ring_;
+  std::uint64_t mask_;
+  std::uint64_t base_ = 0;  // the first cycle not counted
+};
+
+// A unit's cycles holding work, as the union of its items' [entry, exit) intervals, which
+// arrive with non-decreasing ends: one open interval, marked when the next one is disjoint.
+class HoldingCycles {
+ public:
+  void add(CycleFlags& f, std::uint64_t a, std::uint64_t b) {
+    if (a <= b_ && a_ < b_) {
+      b_ = std::max(b_, b);
+      return;
+    }
+    f.markRange(a_, b_, CycleFlags::kHolding);
+    a_ = a;
+    b_ = b;
+  }
+  // Marks the part before t (before the flags count it).
+  void markBefore(CycleFlags& f, std::uint64_t t) {
+    const std::uint64_t e = std::min(b_, t);
+    if (a_ < e) {
+      f.markRange(a_, e, CycleFlags::kHolding);
+      a_ = e;
+    }
+  }
+
+ private:
+  std::uint64_t a_ = 0, b_ = 0;
+};
+
+// The cycles of the last `capacity` items through a channel (when each was received): the
+// item `capacity` places ahead of the next one is the one whose receive frees its slot.
+class Window {
+ public:
+  explicit Window(std::size_t capacity) : times_(capacity, kNone) {}
+  // The cycle before which the next item cannot be sent (0: no constraint).
+  std::uint64_t sendFrom() const {
+    if (times_.empty() || times_[i_] == kNone) return 0;
+    return times_[i_] + 1;
+  }
+  void push(std::uint64_t received) {
+    if (times_.empty()) return;
+    times_[i_] = received;
+    if (++i_ == times_.size()) i_ = 0;
+  }
+
+ private:
+  std::vector<std::uint64_t> times_;  // empty: an unbounded channel
+  std::size_t i_ = 0;
+};
+
+// One pipeline's path: its pixel pipeline, its Z port, its shading unit.
+struct Lane {
+  explicit Lane(std::size_t capacity) : toPipeline(capacity), toZ(capacity), toShading(capacity) {}
+  Window toPipeline, toZ, toShading;  // the receive cycles of each channel's last items
+  // Pixel pipeline.
+  std::uint64_t nextAccept = 0, lastRetire = 0;
+  CycleFlags pipeFlags;
+  HoldingCycles pipeHolding;
+  UnitStats pipe;
+  // Z port.
+  std::uint64_t zNextIssue = 0, zLastRetire = 0;
+  HoldingCycles zHolding;
+  // Shading unit.
+  std::uint64_t shadeNextAccept = 0, shadeLastDone = 0;
+  CycleFlags shadeFlags;
+  HoldingCycles shadeHolding;
+  UnitStats shade;
+};
+
+}  // namespace
+
+ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>& setups, const PixelTrace& trace,
+                          ZBufferMemory& zb, PixelCounters& px) {
+  if (!itemClockApplies(cfg)) throw std::logic_error("item clock: not for this configuration");
+  const HostInterfaceUnit::Params hostP = HostInterfaceUnit::Params::from(cfg);
+  const SetupUnit::Params setupP = SetupUnit::Params::from(cfg);
+  const TraversalUnit::Params travP = TraversalUnit::Params::from(cfg);
+  const std::uint64_t pipeLatency = std::uint64_t(PixelPipelineUnit::Params::from(cfg).latency);
+  const ZBufferUnit::Params zP = ZBufferUnit::Params::from(cfg);
+  const ShadingUnit::Params shadeP = ShadingUnit::Params::from(cfg);
+  const ZBufferMemory::StoredFormat stored = ZBufferMemory::StoredFormat::from(cfg);
+  const std::size_t P = std::size_t(cfg.pipelines);
+
+  ItemClockRun run;
+  UnitStats host, setup, traversal, zunit;
+  host.name = "host_interface";
+  setup.name = "setup";
+  traversal.name = "traversal";
+  zunit.name = "zbuffer";
+  std::vector<Lane> lanes;
+  lanes.reserve(P);
+  for (std::size_t p = 0; p < P; ++p) {
+    lanes.emplace_back(std::size_t(cfg.pixel_fifo_depth));
+    lanes[p].pipe.name = "pixel_pipeline_" + std::to_string(p);
+    lanes[p].shade.name = "shading_" + std::to_string(p);
+  }
+  CycleFlags zFlags;
+  std::vector<std::uint64_t> bankFree(std::size_t(zP.banks), 0);
+  // The last cycle in which anything changed (0 also when nothing ever does: the ticked
+  // machine then runs one idle cycle); each lane's last events are its last retires.
+  std::uint64_t last = 0;
+  const auto changedAt = [&](std::uint64_t t) { last = std::max(last, t); };
+  // Every flag before cycle t is final (each event of a pixel lies after the cycle it was
+  // issued in): count those cycles.
+  const auto countBefore = [&](std::uint64_t t) {
+    for (Lane& l : lanes) {
+      l.pipeHolding.markBefore(l.pipeFlags, t);
+      l.pipeFlags.count(t, l.pipe);
+      l.zHolding.markBefore(zFlags, t);
+      l.shadeHolding.markBefore(l.shadeFlags, t);
+      l.shadeFlags.count(t, l.shade);
+    }
+    zFlags.count(t, zunit);
+  };
+  std::uint64_t counted = 0;  // the cycles counted so far
+
+  // One pixel issued in cycle s to lane p: its pipeline, Z port and shading unit.
+  const auto pixel = [&](std::uint64_t s, std::size_t p, int prim, int x, int y, const TracedPixel& o, int passes) {
+    Lane& l = lanes[p];
+    // Pixel pipeline: accepted once arrived (s + 1) and its stages take it.
+    const std::uint64_t r = std::max(s + 1, l.nextAccept);
+    l.nextAccept = r + std::uint64_t(std::max(1, passes));
+    l.toPipeline.push(r);
+    ++l.pipe.items;
+    ++px.tested;
+    px.clip_passes += std::uint64_t(passes);
+    if (o.hit) {
+      ++px.covered;
+      px.caps += o.cap >= 0;
+    } else {
+      px.clipped += o.candidate != 0;
+    }
+    l.pipeFlags.mark(r, CycleFlags::kChanged);
+    // It leaves in order once done; a visible point waits for room on the Z port's channel.
+    const std::uint64_t head = std::max(r + pipeLatency, l.lastRetire);
+    std::uint64_t q = head;
+    if (o.hit) {
+      q = std::max(head, l.toZ.sendFrom());
+      l.pipeFlags.markRange(head, q, CycleFlags::kStalled);
+    }
+    l.lastRetire = q;
+    l.pipeFlags.mark(q, CycleFlags::kChanged);
+    l.pipeHolding.add(l.pipeFlags, r, q);
+    if (!o.hit) return;
+    // Z port: the request arrives at q + 1, after the port's previous one, and waits for its bank.
+    const std::uint64_t ready = std::max(q + 1, l.zNextIssue);
+    std::uint64_t& bank = bankFree[std::size_t(ZBufferMemory::bankOf(x, y, zP.banks))];
+    const std::uint64_t issue = std::max(ready, bank);
+    zFlags.markRange(ready, issue, CycleFlags::kStalled);
+    bank = issue + std::uint64_t(zP.bank_busy);
+    l.zNextIssue = issue + 1;
+    l.toZ.push(issue);
+    ++zunit.items;
+    zFlags.mark(issue, CycleFlags::kChanged);
+    const std::int64_t z = std::int64_t(o.z);
+    const bool pass = zb.testAndWrite(zb.index(x, y), stored(z), prim, z, int(o.cap));
+    if (pass) ++px.written;
+    else ++px.depth_rejected;
+    // The read leaves in order after its latency; a pass waits for room on the shading channel.
+    const std::uint64_t zHead = std::max(issue + std::uint64_t(zP.read_latency), l.zLastRetire);
+    std::uint64_t zq = zHead;
+    if (pass) {
+      zq = std::max(zHead, l.toShading.sendFrom());
+      zFlags.markRange(zHead, zq, CycleFlags::kStalled);
+    }
+    l.zLastRetire = zq;
+    zFlags.mark(zq, CycleFlags::kChanged);
+    l.zHolding.add(zFlags, issue, zq);
+    if (!pass) return;
+    // Shading: accepted once arrived, one every cycles_per_pixel; delivered after its latency.
+    const std::uint64_t g = std::max(zq + 1, l.shadeNextAccept);
+    l.shadeNextAccept = g + std::uint64_t(shadeP.cycles_per_pixel);
+    l.toShading.push(g);
+    ++l.shade.items;
+    ++run.delivered;
+    const std::uint64_t done = g + std::uint64_t(shadeP.latency);
+    l.shadeFlags.mark(g, CycleFlags::kChanged);
+    l.shadeFlags.mark(done, CycleFlags::kChanged);
+    l.shadeHolding.add(l.shadeFlags, g, done);
+    l.shadeLastDone = done;
+  };
+
+  // Host interface, setup and traversal, primitive by primitive.
+  Window hostToSetup(std::size_t(cfg.host_fifo_depth)), setupToTraversal(std::size_t(cfg.setup_fifo_depth));
+  std::uint64_t hostNext = 0;   // the cycle the host starts its next descriptor
+  std::uint64_t setupFree = 0;  // the cycle the setup unit can take its next primitive
+  std::uint64_t lastOut = kNone;
+  std::uint64_t travFree = 0;   // the cycle traversal can take its next primitive
+  for (std::size_t j = 0; j < setups.size(); ++j) {
+    const PrimitiveSetup& s = setups[j];
+    // Host: the descriptor's transfer, then the send once the setup channel has room.
+    const std::uint64_t transfer = std::uint64_t(hostP.transferCycles(s.descriptorWords));
+    const std::uint64_t hostReady = hostNext + transfer - 1;
+    const std::uint64_t sent = std::max(hostReady, hostToSetup.sendFrom());
+    host.busy += transfer;
+    host.stall += sent - hostReady;
+    ++host.items;
+    changedAt(sent);
+    hostNext = sent + 1;
+    // Setup: takes it once arrived and free, holds it for its operations, then hands it on
+    // (or drops a primitive culled at the host).
+    const std::uint64_t took = std::max(sent + 1, setupFree);
+    hostToSetup.push(took);
+    if (lastOut != kNone && took == lastOut) --setup.busy;  // the hand-on's cycle took this one too
+    const std::uint64_t ops = std::uint64_t(setupP.cycles(s));
+    const std::uint64_t setupReady = took + ops;
+    ++setup.items;
+    setup.busy += ops + 1;  // its cycles, and the cycle it hands on or drops the primitive
+    std::uint64_t out = setupReady;
+    if (!s.culled) out = std::max(setupReady, setupToTraversal.sendFrom());
+    setup.stall += out - setupReady;
+    setupFree = lastOut = out;
+    changedAt(out);
+    if (s.culled) {
+      ++run.culled;
+      continue;
+    }
+    // Traversal: takes it once arrived and free; its first pixels leave the next cycle.
+    const std::uint64_t recv = std::max(out + 1, travFree);
+    setupToTraversal.push(recv);
+    ++traversal.items;
+    ++traversal.busy;
+    changedAt(recv);
+    travFree = recv + 1;
+    if (!s.visible) continue;
+    const int prim = int(j);
+    trace.awaitPrimitive(prim);
+    const std::vector<RowSpans>& rows = trace.rows[j];
+    if (rows.empty()) continue;
+    const int passes = trace.clipPasses(prim);
+    const TracedPixel* const pixels = &trace.pixel(prim, 0);
+    // The Z-buffer records of a row's pixels, fetched into the host's cache a row ahead of
+    // their depth tests (no modeled effect: the ticked pipelines do it as a pixel enters).
+    const auto prefetchRow = [&](const RowSpans& row) {
+      for (int sp = 0; sp < row.n; ++sp) {
+        for (int x = row.s[sp].x0; x < row.s[sp].x1; x += 4) __builtin_prefetch(&zb.px[zb.index(x, row.y)]);
+        __builtin_prefetch(&zb.px[zb.index(row.s[sp].x1 - 1, row.y)]);
+      }
+    };
+    prefetchRow(rows[0]);
+    int k = 0;
+    std::uint64_t t = recv + 1;
+    if (t - counted >= 4096) {
+      countBefore(t);
+      counted = t;
+    }
+    for (std::size_t ri = 0; ri < rows.size(); ++ri) {
+      const RowSpans& row = rows[ri];
+      if (ri + 1 < rows.size()) prefetchRow(rows[ri + 1]);
+      // A row starts on a new cycle; up to one pixel a pipeline a cycle, in span order,
+      // stopping at the first pipeline whose channel is full.
+      std::uint64_t used = 0;
+      for (int sp = 0; sp < row.n; ++sp) {
+        int x = row.s[sp].x0;
+        do {
+          const int p = travP.pipelineOf(x, row.y);
+          const std::uint64_t bit = std::uint64_t(1) << p;
+          if (used & bit) {  // a new cycle
+            ++traversal.busy;
+            ++t;
+            used = 0;
+          }
+          const std::uint64_t from = lanes[std::size_t(p)].toPipeline.sendFrom();
+          if (from > t) {  // full: the cycle ends; traversal waits until the slot is freed
+            if (used) {
+              ++traversal.busy;
+              ++t;
+              used = 0;
+            }
+            if (from > t) {
+              traversal.stall += from - t;
+              t = from;
+            }
+          }
+          used |= bit;
+          pixel(t, std::size_t(p), prim, x, row.y, pixels[k++], passes);
+        } while (++x < row.s[sp].x1);
+      }
+      // The row's last cycle.
+      ++traversal.busy;
+      changedAt(t);
+      ++t;
+    }
+    travFree = t;
+  }
+
+  // The frame ends after the last cycle in which anything changed.
+  for (const Lane& l : lanes) last = std::max({last, l.lastRetire, l.zLastRetire, l.shadeLastDone});
+  run.cycles = last + 1;
+  for (Lane& l : lanes) {
+    l.pipeHolding.add(l.pipeFlags, kNone, kNone);
+    l.zHolding.add(zFlags, kNone, kNone);
+    l.shadeHolding.add(l.shadeFlags, kNone, kNone);
+  }
+  countBefore(run.cycles);
+  const auto finish = [&](UnitStats& u) {
+    if (u.busy + u.stall > run.cycles) throw std::logic_error("item clock: " + u.name + " counted past the frame");
+    u.idle = run.cycles - u.busy - u.stall;
+    run.units.push_back(u);
+  };
+  finish(host);
+  finish(setup);
+  finish(traversal);
+  for (Lane& l : lanes) finish(l.pipe);
+  finish(zunit);
+  for (Lane& l : lanes) finish(l.shade);
+  return run;
+}
+
+}  // namespace qacc

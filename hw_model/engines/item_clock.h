@@ -1,0 +1,53 @@
+// The item clock: hw-cycle's main pass timed item by item instead of cycle by cycle. The
+// timed units (timing/) define the machine; where the item clock applies, each primitive's
+// and each pixel's cycles follow from its predecessors' by the units' own rules, so the
+// frame is computed in one pass over the items, in issue order, without ticking the units:
+//  - a pixel pipeline and the Z unit accept whatever their outputs do (their stages are
+//    unbounded), so a pixel's accept is max(arrival, previous accept + its clip passes), and
+//    a full channel only delays its sender until the item `capacity` places ahead of it was
+//    received (channels count their occupancy at the start of the cycle: channel.h);
+//  - with `zbuffer_banks` a multiple of `pipelines`, each Z port has its own banks (pixel
+//    (x, y) goes to pipeline (x + y) mod P and bank (x + y) mod B), so a request waits only
+//    for its own port's earlier requests and its bank, and the round-robin priority decides
+//    nothing; every pixel's requests reach the Z-buffer in the same order as in the ticked
+//    machine, so the depth tests give the same winners;
+//  - every event of an item is later than the cycle the traversal issued it in, so the
+//    units' counters (busy / stall / idle: a cycle is busy when the unit changed anything,
+//    else a stall when it waited on an output, else busy when it holds work) are counted
+//    from per-cycle flags, cycle by cycle, behind the traversal.
+// Applies without the hierarchical Z unit (its lookups see the Z unit's writes by time) and
+// with banks shared by no two ports; elsewhere the engine ticks the units (machine_run.h).
+// The tests compare every counter with the clock that ticks every cycle, on every shipped
+// scene and configuration and under random timings (test_hw_engines.cpp).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "hw_model/config/hw_config.h"
+#include "hw_model/datapath/primitive_setup.h"
+#include "hw_model/datapath/zbuffer_memory.h"
+#include "hw_model/engines/pixel_trace.h"
+#include "hw_model/report/hw_stats.h"
+
+namespace qacc {
+
+// Whether the item clock gives the ticked machine's cycles and counters for this
+// configuration (no hierarchical Z unit; zbuffer_banks a multiple of pipelines).
+bool itemClockApplies(const HwConfig& cfg);
+
+struct ItemClockRun {
+  std::uint64_t cycles = 0;
+  // The units' counters in the wiring's order (cycle_engine.cpp): host interface, setup,
+  // traversal, the P pixel pipelines, the Z unit, the P shading units.
+  std::vector<UnitStats> units;
+  std::uint64_t delivered = 0;  // pixels the shading units delivered
+  std::uint64_t culled = 0;     // primitives the setup unit dropped (culled at the host)
+};
+
+// The main pass of `setups` (the csg objects' leaves not visible), its pixels' results from
+// `trace` (filled, or being filled ahead: PixelTrace::awaitPrimitive), its winners left in
+// `zb`, its pixel counters added to `px`.
+ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>& setups, const PixelTrace& trace,
+                          ZBufferMemory& zb, PixelCounters& px);
+
+}  // namespace qacc
