@@ -53,8 +53,8 @@ class CycleFlags {
         std::uint64_t w;
         std::memcpy(&w, p + i, 8);
         const std::uint64_t c = w & kLow, s = (w >> 1) & kLow, h = (w >> 2) & kLow;
-        u.busy += std::uint64_t(__builtin_popcountll(c | (h & ~s)));
-        u.stall += std::uint64_t(__builtin_popcountll(s & ~c));
+        u.busy += bytesSet(c | (h & ~s));
+        u.stall += bytesSet(s & ~c);
       }
       for (; i < n; ++i) {
         const std::uint8_t f = p[i];
@@ -69,6 +69,9 @@ class CycleFlags {
 
  private:
   static constexpr std::size_t kInitial = 4096;  // a power of two
+  // The bytes of w whose bit 0 is set, w having no other bit (a multiply: the host's
+  // baseline instruction set has no popcount instruction).
+  static std::uint64_t bytesSet(std::uint64_t w) { return (w * 0x0101010101010101ull) >> 56; }
   // Calls f(pointer, length) on the ring's contiguous pieces of cycles [a, b).
   template <typename F>
   void segments(std::uint64_t a, std::uint64_t b, F&& f) {
@@ -80,8 +83,10 @@ class CycleFlags {
     }
   }
   void reach(std::uint64_t t) {
+    if (t - base_ > mask_) grow(t);  // also t < base_ (the difference wraps)
+  }
+  [[gnu::noinline]] void grow(std::uint64_t t) {
     if (t < base_) throw std::logic_error("item clock: an event before the cycles already counted");
-    if (t - base_ <= mask_) return;
     std::size_t n = mask_ + 1;
     while (t - base_ >= n) n *= 2;
     std::vector<std::uint8_t> bigger(n, 0);
@@ -124,20 +129,19 @@ class HoldingCycles {
 // item `capacity` places ahead of the next one is the one whose receive frees its slot.
 class Window {
  public:
-  explicit Window(std::size_t capacity) : times_(capacity, kNone) {}
-  // The cycle before which the next item cannot be sent (0: no constraint).
-  std::uint64_t sendFrom() const {
-    if (times_.empty() || times_[i_] == kNone) return 0;
-    return times_[i_] + 1;
-  }
+  // Capacity 0: an unbounded channel (one slot that stays 0: no constraint).
+  explicit Window(std::size_t capacity)
+      : times_(std::max<std::size_t>(capacity, 1), 0), keep_(capacity == 0 ? 0 : ~std::uint64_t(0)) {}
+  // The first cycle the next item can be sent in.
+  std::uint64_t sendFrom() const { return times_[i_]; }
   void push(std::uint64_t received) {
-    if (times_.empty()) return;
-    times_[i_] = received;
+    times_[i_] = (received + 1) & keep_;  // the slot is free from the cycle after the receive
     if (++i_ == times_.size()) i_ = 0;
   }
 
  private:
-  std::vector<std::uint64_t> times_;  // empty: an unbounded channel
+  std::vector<std::uint64_t> times_;  // per slot: its last receive + 1 (0: never used)
+  std::uint64_t keep_;
   std::size_t i_ = 0;
 };
 
@@ -208,7 +212,8 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
   std::uint64_t counted = 0;  // the cycles counted so far
 
   // One pixel issued in cycle s to lane p: its pipeline, Z port and shading unit.
-  const auto pixel = [&](std::uint64_t s, std::size_t p, int prim, int x, int y, const TracedPixel& o, int passes) {
+  const auto pixel = [&](std::uint64_t s, std::size_t p, int prim, int x, int y, const TracedPixel& o,
+                         int passes) __attribute__((always_inline)) {
     Lane& l = lanes[p];
     // Pixel pipeline: accepted once arrived (s + 1) and its stages take it.
     const std::uint64_t r = std::max(s + 1, l.nextAccept);
