@@ -24,79 +24,104 @@ namespace {
 constexpr std::uint64_t kNone = ~std::uint64_t(0);
 
 // What a unit's tick did in each cycle, for the cycles not yet counted: changed anything,
-// waited on an output (a full channel, a busy bank), holds work after the tick. A ring over
-// the cycles from the first one not counted, grown when an event lies further ahead.
+// waited on an output (a full channel, a busy bank), holds work after the tick. A bit a cycle
+// for each, in rings of 64-bit words over the cycles from the first one not counted, grown
+// when an event lies further ahead (events can lie far ahead of the traversal when a unit
+// downstream is slower than the pipelines: a bit a cycle keeps that memory near the ticked
+// machine's, which holds the waiting pixels themselves).
 class CycleFlags {
  public:
-  static constexpr std::uint8_t kChanged = 1, kStalled = 2, kHolding = 4;
-  CycleFlags() : ring_(kInitial, 0), mask_(kInitial - 1) {}
-  void mark(std::uint64_t t, std::uint8_t f) {
-    reach(t);
-    ring_[t & mask_] |= f;
+  enum Flag { kChanged = 0, kStalled = 1, kHolding = 2 };
+  CycleFlags() : ring_(3 * kInitialWords, 0), bits_(ring_.data()), mask_(kInitialWords - 1) {}
+  CycleFlags(const CycleFlags&) = delete;
+  CycleFlags& operator=(const CycleFlags&) = delete;
+  CycleFlags(CycleFlags&& o) noexcept { *this = std::move(o); }
+  CycleFlags& operator=(CycleFlags&& o) noexcept {
+    ring_ = std::move(o.ring_);
+    bits_ = ring_.data();
+    mask_ = o.mask_;
+    base_ = o.base_;
+    baseWord_ = o.baseWord_;
+    end_ = o.end_;
+    return *this;
   }
-  void markRange(std::uint64_t a, std::uint64_t b, std::uint8_t f) {
+  // The unit's marks so far end at cycle t (the last event of an item: its exit, which
+  // follows every other mark of that item; once an item, not once a mark, which would chain
+  // every mark through this one value).
+  void lastMark(std::uint64_t t) { end_ = std::max(end_, t + 1); }
+  template <Flag F>
+  void mark(std::uint64_t t) {
+    reach(t);
+    bits_[word(t >> 6) + F] |= std::uint64_t(1) << (t & 63);
+  }
+  template <Flag F>
+  void markRange(std::uint64_t a, std::uint64_t b) {
     if (a >= b) return;
     reach(b - 1);
-    segments(a, b, [f](std::uint8_t* p, std::size_t n) {
-      for (std::size_t i = 0; i < n; ++i) p[i] |= f;
-    });
+    words(a, b, [&](std::size_t w, std::uint64_t m) { bits_[w + F] |= m; });
   }
   // Counts the cycles before t as the unit's tick counts them (Unit::countCycle: changed →
-  // busy, else waited → stall, else holding → busy, else idle), and forgets them. Eight
-  // cycles a word: each flag is bit 0, 1 or 2 of its cycle's byte.
+  // busy, else waited → stall, else holding → busy, else idle), and forgets them. Cycles
+  // after the last one marked are idle: nothing to count.
   void count(std::uint64_t t, UnitStats& u) {
-    if (t <= base_) return;
-    segments(base_, t, [&u](std::uint8_t* p, std::size_t n) {
-      constexpr std::uint64_t kLow = 0x0101010101010101ull;
-      std::size_t i = 0;
-      for (; i + 8 <= n; i += 8) {
-        std::uint64_t w;
-        std::memcpy(&w, p + i, 8);
-        const std::uint64_t c = w & kLow, s = (w >> 1) & kLow, h = (w >> 2) & kLow;
-        u.busy += bytesSet(c | (h & ~s));
-        u.stall += bytesSet(s & ~c);
-      }
-      for (; i < n; ++i) {
-        const std::uint8_t f = p[i];
-        if (f & kChanged) ++u.busy;
-        else if (f & kStalled) ++u.stall;
-        else if (f & kHolding) ++u.busy;
-      }
-      std::memset(p, 0, n);
-    });
-    base_ = t;
+    const std::uint64_t stop = std::min(t, end_);
+    if (base_ < stop) {
+      words(base_, stop, [&](std::size_t w, std::uint64_t m) {
+        std::uint64_t* r = bits_ + w;
+        const std::uint64_t c = r[kChanged] & m, st = r[kStalled] & m, h = r[kHolding] & m;
+        u.busy += bitsSet(c | (h & ~st));
+        u.stall += bitsSet(st & ~c);
+        for (int f = 0; f < 3; ++f) r[f] &= ~m;
+      });
+    }
+    base_ = std::max(base_, t);
+    baseWord_ = base_ >> 6;
   }
 
  private:
-  static constexpr std::size_t kInitial = 4096;  // a power of two
-  // The bytes of w whose bit 0 is set, w having no other bit (a multiply: the host's
-  // baseline instruction set has no popcount instruction).
-  static std::uint64_t bytesSet(std::uint64_t w) { return (w * 0x0101010101010101ull) >> 56; }
-  // Calls f(pointer, length) on the ring's contiguous pieces of cycles [a, b).
+  static constexpr std::size_t kInitialWords = 64;  // a power of two
+  // The bits set in x, inline (the host's baseline instruction set has no popcount
+  // instruction: __builtin_popcountll would be a call).
+  static std::uint64_t bitsSet(std::uint64_t x) {
+    x -= (x >> 1) & 0x5555555555555555ull;
+    x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
+    x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0full;
+    return (x * 0x0101010101010101ull) >> 56;
+  }
+  // The ring's first word of cycle word w (the three flags' words side by side).
+  std::size_t word(std::uint64_t w) const { return std::size_t(w & mask_) * 3; }
+  // Calls f(ring word, mask of the cycles of [a, b) in it) for each word [a, b) touches.
   template <typename F>
-  void segments(std::uint64_t a, std::uint64_t b, F&& f) {
-    while (a < b) {
-      const std::size_t i = std::size_t(a & mask_);
-      const std::size_t n = std::size_t(std::min<std::uint64_t>(b - a, ring_.size() - i));
-      f(ring_.data() + i, n);
-      a += n;
+  void words(std::uint64_t a, std::uint64_t b, F&& f) {
+    const std::uint64_t last = (b - 1) >> 6;
+    for (std::uint64_t w = a >> 6; w <= last; ++w) {
+      std::uint64_t m = ~std::uint64_t(0);
+      if (w == a >> 6) m &= ~std::uint64_t(0) << (a & 63);
+      if (w == last) m &= ~std::uint64_t(0) >> (63 - ((b - 1) & 63));
+      f(word(w), m);
     }
   }
   void reach(std::uint64_t t) {
-    if (t - base_ > mask_) grow(t);  // also t < base_ (the difference wraps)
+    if ((t >> 6) - baseWord_ > mask_) grow(t);  // also t < base_ (the difference wraps)
   }
   [[gnu::noinline]] void grow(std::uint64_t t) {
     if (t < base_) throw std::logic_error("item clock: an event before the cycles already counted");
+    const std::uint64_t first = baseWord_, need = (t >> 6) - first + 1;
     std::size_t n = mask_ + 1;
-    while (t - base_ >= n) n *= 2;
-    std::vector<std::uint8_t> bigger(n, 0);
-    for (std::uint64_t c = base_; c < base_ + mask_ + 1; ++c) bigger[c & (n - 1)] = ring_[c & mask_];
+    while (n < need) n *= 2;
+    std::vector<std::uint64_t> bigger(3 * n, 0);
+    for (std::uint64_t w = first; w <= first + mask_; ++w)
+      for (std::size_t f = 0; f < 3; ++f) bigger[std::size_t(w & (n - 1)) * 3 + f] = ring_[word(w) + f];
     ring_.swap(bigger);
+    bits_ = ring_.data();
     mask_ = n - 1;
   }
-  std::vector<std::uint8_t> ring_;
-  std::uint64_t mask_;
-  std::uint64_t base_ = 0;  // the first cycle not counted
+  std::vector<std::uint64_t> ring_;  // per word of 64 cycles: changed, stalled, holding
+  std::uint64_t* bits_;              // ring_.data()
+  std::uint64_t mask_;               // words of 64 cycles in the ring - 1
+  std::uint64_t base_ = 0;           // the first cycle not counted
+  std::uint64_t baseWord_ = 0;       // base_ / 64
+  std::uint64_t end_ = 0;            // one past the last cycle marked (lastMark)
 };
 
 // A unit's cycles holding work, as the union of its items' [entry, exit) intervals, which
@@ -108,7 +133,7 @@ class HoldingCycles {
       b_ = std::max(b_, b);
       return;
     }
-    f.markRange(a_, b_, CycleFlags::kHolding);
+    f.markRange<CycleFlags::kHolding>(a_, b_);
     a_ = a;
     b_ = b;
   }
@@ -116,7 +141,7 @@ class HoldingCycles {
   void markBefore(CycleFlags& f, std::uint64_t t) {
     const std::uint64_t e = std::min(b_, t);
     if (a_ < e) {
-      f.markRange(a_, e, CycleFlags::kHolding);
+      f.markRange<CycleFlags::kHolding>(a_, e);
       a_ = e;
     }
   }
@@ -228,28 +253,29 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
     } else {
       px.clipped += o.candidate != 0;
     }
-    l.pipeFlags.mark(r, CycleFlags::kChanged);
+    l.pipeFlags.mark<CycleFlags::kChanged>(r);
     // It leaves in order once done; a visible point waits for room on the Z port's channel.
     const std::uint64_t head = std::max(r + pipeLatency, l.lastRetire);
     std::uint64_t q = head;
     if (o.hit) {
       q = std::max(head, l.toZ.sendFrom());
-      l.pipeFlags.markRange(head, q, CycleFlags::kStalled);
+      l.pipeFlags.markRange<CycleFlags::kStalled>(head, q);
     }
     l.lastRetire = q;
-    l.pipeFlags.mark(q, CycleFlags::kChanged);
+    l.pipeFlags.mark<CycleFlags::kChanged>(q);
+    l.pipeFlags.lastMark(q);
     l.pipeHolding.add(l.pipeFlags, r, q);
     if (!o.hit) return;
     // Z port: the request arrives at q + 1, after the port's previous one, and waits for its bank.
     const std::uint64_t ready = std::max(q + 1, l.zNextIssue);
     std::uint64_t& bank = bankFree[std::size_t(ZBufferMemory::bankOf(x, y, zP.banks))];
     const std::uint64_t issue = std::max(ready, bank);
-    zFlags.markRange(ready, issue, CycleFlags::kStalled);
+    zFlags.markRange<CycleFlags::kStalled>(ready, issue);
     bank = issue + std::uint64_t(zP.bank_busy);
     l.zNextIssue = issue + 1;
     l.toZ.push(issue);
     ++zunit.items;
-    zFlags.mark(issue, CycleFlags::kChanged);
+    zFlags.mark<CycleFlags::kChanged>(issue);
     const std::int64_t z = std::int64_t(o.z);
     const bool pass = zb.testAndWrite(zb.index(x, y), stored(z), prim, z, int(o.cap));
     if (pass) ++px.written;
@@ -259,10 +285,11 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
     std::uint64_t zq = zHead;
     if (pass) {
       zq = std::max(zHead, l.toShading.sendFrom());
-      zFlags.markRange(zHead, zq, CycleFlags::kStalled);
+      zFlags.markRange<CycleFlags::kStalled>(zHead, zq);
     }
     l.zLastRetire = zq;
-    zFlags.mark(zq, CycleFlags::kChanged);
+    zFlags.mark<CycleFlags::kChanged>(zq);
+    zFlags.lastMark(zq);
     l.zHolding.add(zFlags, issue, zq);
     if (!pass) return;
     // Shading: accepted once arrived, one every cycles_per_pixel; delivered after its latency.
@@ -272,8 +299,9 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
     ++l.shade.items;
     ++run.delivered;
     const std::uint64_t done = g + std::uint64_t(shadeP.latency);
-    l.shadeFlags.mark(g, CycleFlags::kChanged);
-    l.shadeFlags.mark(done, CycleFlags::kChanged);
+    l.shadeFlags.mark<CycleFlags::kChanged>(g);
+    l.shadeFlags.mark<CycleFlags::kChanged>(done);
+    l.shadeFlags.lastMark(done);
     l.shadeHolding.add(l.shadeFlags, g, done);
     l.shadeLastDone = done;
   };
@@ -327,24 +355,13 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
     if (rows.empty()) continue;
     const int passes = trace.clipPasses(prim);
     const TracedPixel* const pixels = &trace.pixel(prim, 0);
-    // The Z-buffer records of a row's pixels, fetched into the host's cache a row ahead of
-    // their depth tests (no modeled effect: the ticked pipelines do it as a pixel enters).
-    const auto prefetchRow = [&](const RowSpans& row) {
-      for (int sp = 0; sp < row.n; ++sp) {
-        for (int x = row.s[sp].x0; x < row.s[sp].x1; x += 4) __builtin_prefetch(&zb.px[zb.index(x, row.y)]);
-        __builtin_prefetch(&zb.px[zb.index(row.s[sp].x1 - 1, row.y)]);
-      }
-    };
-    prefetchRow(rows[0]);
     int k = 0;
     std::uint64_t t = recv + 1;
-    if (t - counted >= 4096) {
-      countBefore(t);
-      counted = t;
-    }
-    for (std::size_t ri = 0; ri < rows.size(); ++ri) {
-      const RowSpans& row = rows[ri];
-      if (ri + 1 < rows.size()) prefetchRow(rows[ri + 1]);
+    for (const RowSpans& row : rows) {
+      if (t - counted >= 4096) {  // every 4096 cycles or more, at a row's start
+        countBefore(t);
+        counted = t;
+      }
       // A row starts on a new cycle; up to one pixel a pipeline a cycle, in span order,
       // stopping at the first pipeline whose channel is full.
       std::uint64_t used = 0;

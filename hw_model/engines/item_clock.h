@@ -3,9 +3,10 @@
 // and each pixel's cycles follow from its predecessors' by the units' own rules, so the
 // frame is computed in one pass over the items, in issue order, without ticking the units:
 //  - a pixel pipeline and the Z unit accept whatever their outputs do (their stages are
-//    unbounded), so a pixel's accept is max(arrival, previous accept + its clip passes), and
-//    a full channel only delays its sender until the item `capacity` places ahead of it was
-//    received (channels count their occupancy at the start of the cycle: channel.h);
+//    unbounded), so a pixel's accept is max(arrival, the previous pixel's accept + that
+//    pixel's clip passes), and a full channel only delays its sender to the cycle after the
+//    item `capacity` places ahead of it was received (channels count their occupancy at the
+//    start of the cycle: channel.h);
 //  - with `zbuffer_banks` a multiple of `pipelines`, each Z port has its own banks (pixel
 //    (x, y) goes to pipeline (x + y) mod P and bank (x + y) mod B), so a request waits only
 //    for its own port's earlier requests and its bank, and the round-robin priority decides
@@ -14,7 +15,11 @@
 //  - every event of an item is later than the cycle the traversal issued it in, so the
 //    units' counters (busy / stall / idle: a cycle is busy when the unit changed anything,
 //    else a stall when it waited on an output, else busy when it holds work) are counted
-//    from per-cycle flags, cycle by cycle, behind the traversal.
+//    from per-cycle flags (a bit a cycle each) behind the traversal.
+// One pass over the items: it ends on any input, and needs no deadlock limit (the clock that
+// ticks every cycle reports a million unchanged cycles in a row as a deadlock, so a frame
+// with a longer wait, such as a descriptor of hundreds of clip planes on the slowest bus,
+// has cycles under this clock and none under that one).
 // Applies without the hierarchical Z unit (its lookups see the Z unit's writes by time) and
 // with banks shared by no two ports; elsewhere the engine ticks the units (machine_run.h).
 // The tests compare every counter with the clock that ticks every cycle, on every shipped
