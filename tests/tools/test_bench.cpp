@@ -49,6 +49,7 @@ TEST(BenchCommand, JsonHasEveryFieldPerSceneAndThreadCount) {
     for (const char* k : {"ref_ms", "hw_ms", "hw_cycle_ms", "loop_cycles_per_second", "tested_pixels_per_second"})
       EXPECT_GT(r.at(k).get<double>(), 0.0) << k;
     EXPECT_GT(r.at("cycles").get<std::uint64_t>(), 0u);
+    EXPECT_EQ(r.at("simulator_clock"), "items") << "the default configuration's main pass";
     // Each engine's best frame carries the page faults taken during it (a count, maybe 0).
     for (const char* k : {"ref_page_faults", "hw_page_faults", "hw_cycle_page_faults"})
       EXPECT_GE(r.at(k).get<long>(), 0) << k;
@@ -58,6 +59,7 @@ TEST(BenchCommand, JsonHasEveryFieldPerSceneAndThreadCount) {
   ASSERT_EQ(doc.at("scaling").size(), 1u);
   EXPECT_GT(doc["scaling"][0].at("hw_speedup").get<double>(), 0.0);
   EXPECT_NE(text.find("1 -> 2 threads"), std::string::npos) << text;
+  EXPECT_NE(text.find("hw-cycle's simulator clock: items"), std::string::npos) << text;
 }
 
 TEST(BenchCommand, ZoomedFovBenchesTheZoomedViewBesideTheFullOne) {

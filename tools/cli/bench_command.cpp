@@ -73,6 +73,7 @@ struct BenchRun {
   std::uint64_t tested = 0, cycles = 0;
   double loopS = 0, traceS = 0, frameMs = 0;
   long refFaults = 0, hwFaults = 0, cycleFaults = 0;  // minor page faults of each engine's best frame
+  std::string clock;  // how hw-cycle's simulator went through the main pass (HwStats::simulator_clock)
   double testedPerSecond() const { return double(tested) / (hwMs * 1e-3); }
   double loopRate() const { return loopS > 0 ? double(cycles) / loopS : 0.0; }
 };
@@ -149,6 +150,7 @@ BenchRun benchOne(const Scene& scene, const HwConfig& cfg, int threads, int repe
                                       b.frameMs = r.stats.frameSeconds() * 1e3;
                                       loopS = r.stats.loop_seconds;
                                       traceS = r.stats.trace_seconds;
+                                      b.clock = r.stats.simulator_clock;
                                     });
     if (t.ms < b.cycleMs) {
       b.loopS = loopS;
@@ -176,6 +178,7 @@ nlohmann::json toJson(const BenchRun& b) {
           {"loop_seconds", b.loopS},
           {"trace_seconds", b.traceS},
           {"loop_cycles_per_second", b.loopRate()},
+          {"simulator_clock", b.clock},
           {"tested_pixels", b.tested},
           {"tested_pixels_per_second", b.testedPerSecond()},
           {"tested_pixels_per_second_per_thread", b.testedPerSecond() / b.threads},
@@ -243,6 +246,8 @@ void runBench(const BenchArgs& a) {
                          {"hw_cycle_speedup", a.cycle ? lo.cycleMs / hi.cycleMs : 0.0}});
     }
   const double load1 = loadAverage();
+  if (a.cycle && !runs.empty())
+    std::printf("hw-cycle's simulator clock: %s (loop cyc/s is its rate)\n", runs.front().clock.c_str());
   std::printf("load average %.2f at the start, %.2f at the end\n", load0, load1);
   if (!a.out.empty()) {
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
