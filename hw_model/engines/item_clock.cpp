@@ -1,7 +1,7 @@
 #include "hw_model/engines/item_clock.h"
 
 #include <algorithm>
-#include <cstring>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
