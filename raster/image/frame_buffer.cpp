@@ -5,7 +5,7 @@
 
 namespace qacc {
 
-FrameBuffer::Background::Background(const std::array<std::uint8_t, 3>& c) : rgb(c) {
+FrameBuffer::Background::Background(const std::array<std::uint8_t, 3>& c) {
   for (std::size_t i = 0; i < 48; i += 3) {
     pattern[i] = c[0];
     pattern[i + 1] = c[1];

@@ -24,8 +24,7 @@ struct FrameBuffer {
   struct Background {
     Background(const std::array<std::uint8_t, 3>& rgb);  // implicit: a colour is a background
     Background(std::uint8_t r, std::uint8_t g, std::uint8_t b) : Background(std::array<std::uint8_t, 3>{r, g, b}) {}
-    std::array<std::uint8_t, 3> rgb;
-    std::uint8_t pattern[48];
+    std::uint8_t pattern[48];  // the colour's three bytes, 16 times
   };
 
   FrameBuffer() = default;
