@@ -97,16 +97,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const qacc::HwRender b = qacc::renderHwCycle(scene, cfg, 1);
   if (!(a.fb.color.data == b.fb.color.data) || a.fb.object != b.fb.object) std::abort();
   // The engine's clock (the item clock for the default configuration), the ticking clock
-  // that repeats, and the one that ticks every cycle: every count must agree but the cycles
-  // the repeating clock fast-forwarded (the other two fast-forward none).
-  qacc::HwRender r = qacc::renderHwCycle(scene, cfg, 1, qacc::MachineClock::Repeating);
-  qacc::HwRender c = qacc::renderHwCycle(scene, cfg, 1, qacc::MachineClock::EveryCycle);
+  // that repeats, and the one that ticks every cycle: every count must agree (countsJson
+  // leaves out the cycles the repeating clock fast-forwarded; the clock that ticks every
+  // cycle fast-forwards none).
+  const qacc::HwRender r = qacc::renderHwCycle(scene, cfg, 1, qacc::MachineClock::Repeating);
+  const qacc::HwRender c = qacc::renderHwCycle(scene, cfg, 1, qacc::MachineClock::EveryCycle);
   if (c.stats.fast_forwarded != 0 || b.stats.simulator_clock != "items") std::abort();
-  c.stats.fast_forwarded = r.stats.fast_forwarded;
-  qacc::HwStats items = b.stats;
-  items.fast_forwarded = r.stats.fast_forwarded;
-  if (items.countsJson() != c.stats.countsJson() || r.stats.countsJson() != c.stats.countsJson() ||
-      !(b.fb.color.data == c.fb.color.data) || !(r.fb.color.data == c.fb.color.data))
+  const std::string expected = c.stats.countsJson();
+  if (b.stats.countsJson() != expected || r.stats.countsJson() != expected || !(b.fb.color.data == c.fb.color.data) ||
+      !(r.fb.color.data == c.fb.color.data))
     std::abort();
   tessellateLikeFacets(scene);
   ++counts.drawn;

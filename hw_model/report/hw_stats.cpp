@@ -190,7 +190,7 @@ std::string HwStats::toJson() const { return toJ(*this).dump(2) + "\n"; }
 std::string HwStats::countsJson() const {
   nlohmann::ordered_json j = toJ(*this);
   for (const char* k : {"host_seconds", "host_cycles_per_second", "slowdown", "loop_seconds", "loop_cycles_per_second",
-                        "trace_seconds", "threads", "simulator_clock"})
+                        "trace_seconds", "threads", "simulator_clock", "fast_forwarded_cycles"})
     j.erase(k);
   return j.dump(2) + "\n";
 }

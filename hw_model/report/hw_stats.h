@@ -117,7 +117,8 @@ struct HwStats {
 
   std::string toJson() const;
   // toJson without what depends on the host (its times and rates, the slowdown, the thread
-  // count): every count of the run, which another run of the same frame must reproduce.
+  // count) or on the simulator's clock (its name, the cycles the ticking clock fast-forwarded):
+  // every count of the run, which another run of the same frame must reproduce under any clock.
   std::string countsJson() const;
   std::string toCsv() const;  // one header line + one value line
   // Writes path (JSON) and path with extension replaced by .csv.
