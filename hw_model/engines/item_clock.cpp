@@ -309,8 +309,7 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
   // Host interface, setup and traversal, primitive by primitive.
   Window hostToSetup(std::size_t(cfg.host_fifo_depth)), setupToTraversal(std::size_t(cfg.setup_fifo_depth));
   std::uint64_t hostNext = 0;   // the cycle the host starts its next descriptor
-  std::uint64_t setupFree = 0;  // the cycle the setup unit can take its next primitive
-  std::uint64_t lastOut = kNone;
+  std::uint64_t setupFree = 0;  // the cycle the setup unit can take its next one (the last hand-on)
   std::uint64_t travFree = 0;   // the cycle traversal can take its next primitive
   for (std::size_t j = 0; j < setups.size(); ++j) {
     const PrimitiveSetup& s = setups[j];
@@ -327,7 +326,7 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
     // (or drops a primitive culled at the host).
     const std::uint64_t took = std::max(sent + 1, setupFree);
     hostToSetup.push(took);
-    if (lastOut != kNone && took == lastOut) --setup.busy;  // the hand-on's cycle took this one too
+    if (j > 0 && took == setupFree) --setup.busy;  // the previous hand-on's cycle took this one too
     const std::uint64_t ops = std::uint64_t(setupP.cycles(s));
     const std::uint64_t setupReady = took + ops;
     ++setup.items;
@@ -335,7 +334,7 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
     std::uint64_t out = setupReady;
     if (!s.culled) out = std::max(setupReady, setupToTraversal.sendFrom());
     setup.stall += out - setupReady;
-    setupFree = lastOut = out;
+    setupFree = out;
     changedAt(out);
     if (s.culled) {
       ++run.culled;
