@@ -1,9 +1,9 @@
 // Fuzz target: a scene rendered tiny (24x18) by every engine. A scene the loader accepts must
 // render without a crash or sanitizer report in the reference, hw and hw-cycle, and hw and
 // hw-cycle must produce the same image (they are bit-identical by construction); hw-cycle's
-// clocks — the item clock (engines/item_clock.h, the default configuration's) and the ticking
-// clock that repeats one tick's counts over cycles that cannot differ — must count what
-// ticking every cycle counts (MachineClock::EveryCycle: every count of HwStats::countsJson —
+// clocks — the item clock (engines/item_clock.h; the default configuration's, and with the
+// hierarchical Z unit) and the ticking clock that repeats one tick's counts over cycles that
+// cannot differ — must count what ticking every cycle counts (MachineClock::EveryCycle: every count of HwStats::countsJson —
 // cycles, every unit's busy / stall / idle / items, pixel, overflow, hierarchical Z and CSG
 // counters). The facets
 // engine is represented by its tessellation (modeling/tessellation, the facets engine's
@@ -106,6 +106,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string expected = c.stats.countsJson();
   if (b.stats.countsJson() != expected || r.stats.countsJson() != expected || !(b.fb.color.data == c.fb.color.data) ||
       !(r.fb.color.data == c.fb.color.data))
+    std::abort();
+  // The item clock with the hierarchical Z unit (4x4 tiles: lookups that reject at this size),
+  // against ticking every cycle.
+  qacc::HwConfig hizCfg;
+  hizCfg.hierarchical_z = true;
+  hizCfg.hiz_tile_size = 4;
+  const qacc::HwRender hi = qacc::renderHwCycle(scene, hizCfg, 1, qacc::MachineClock::Items);
+  const qacc::HwRender hc = qacc::renderHwCycle(scene, hizCfg, 1, qacc::MachineClock::EveryCycle);
+  if (hi.stats.simulator_clock != "items" || hi.stats.countsJson() != hc.stats.countsJson() ||
+      !(hi.fb.color.data == hc.fb.color.data))
     std::abort();
   tessellateLikeFacets(scene);
   ++counts.drawn;

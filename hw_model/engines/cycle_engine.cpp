@@ -145,6 +145,7 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
     st.units.insert(st.units.end(), items.units.begin(), items.units.end());
     delivered = items.delivered;
     culled = items.culled;
+    st.hiz = items.hiz;
   } else {
     st.cycles = wires.now();
     appendUnitStats(st.units, host, setup, traversal, pipelines, zunit, hiz, shading);

@@ -1,11 +1,14 @@
 #include "hw_model/engines/item_clock.h"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 #include <stdexcept>
 #include <string>
 
+#include "hw_model/datapath/hierarchical_z_memory.h"
 #include "hw_model/datapath/screen_interleave.h"
+#include "hw_model/timing/hierarchical_z_unit.h"
 #include "hw_model/timing/host_interface_unit.h"
 #include "hw_model/timing/pixel_pipeline_unit.h"
 #include "hw_model/timing/setup_unit.h"
@@ -16,7 +19,7 @@
 namespace qacc {
 
 bool itemClockApplies(const HwConfig& cfg) {
-  return !cfg.hierarchical_z && cfg.pipelines >= 1 && cfg.pipelines <= 64 && cfg.zbuffer_banks % cfg.pipelines == 0;
+  return cfg.pipelines >= 1 && cfg.pipelines <= 64 && cfg.zbuffer_banks % cfg.pipelines == 0;
 }
 
 namespace {
@@ -189,11 +192,118 @@ struct Lane {
   UnitStats shade;
 };
 
-}  // namespace
+// The hierarchical Z unit (HierarchicalZUnit's rules): its tile memory, the Z unit's writes
+// on their way to it, its counters. The writes reach the tile memory by due cycle (issue +
+// update_latency) and, within one issue cycle, in the Z unit's round-robin order of that
+// cycle (port rr, rr + 1, ..., with rr = cycle mod P: the pointer advances every cycle from
+// 0). The order matters: a write that completes a tile's layer and one that joins the next
+// leave another tile record the other way round. Each port issues in order, so each port's
+// writes wait in a queue of their own, in due order, and a lookup merges the queues' heads.
+class HierarchicalZ {
+ public:
+  HierarchicalZ(const HwConfig& cfg, const std::vector<PrimitiveSetup>& setups, int width, int height)
+      : p_(HierarchicalZUnit::Params::from(cfg)), memory_(cfg, 0, 0, width, height), queues_(std::size_t(cfg.pipelines)) {
+    floors_.reserve(setups.size());
+    for (const PrimitiveSetup& s : setups) floors_.push_back(ZBufferMemory::storedValue(s.zFloor, cfg));
+    unit.name = "hierarchical_z";
+  }
+  int tileSize() const { return p_.tile_size; }
+  // A Z write issued by `port` in cycle `issue`: due at the tile memory update_latency later,
+  // a cycle in which the unit is busy (its tick writes the tile).
+  void noteWrite(std::uint64_t issue, std::size_t port, int x, int y, std::uint32_t stored) {
+    const std::uint64_t due = issue + std::uint64_t(p_.update_latency);
+    queues_[port].writes.push_back({due, x, y, stored});
+    firstDue_ = std::min(firstDue_, due);
+    flags.mark<CycleFlags::kChanged>(due);
+    flags.lastMark(due);
+  }
+  // The lookup of the block of a span starting at (x, y), for primitive `prim`, in cycle t:
+  // true when rejected. It sees the writes due by t.
+  bool rejects(std::uint64_t t, int prim, int x, int y) {
+    if (firstDue_ <= t) applyDue(t);
+    flags.mark<CycleFlags::kChanged>(t);
+    flags.lastMark(t);
+    ++unit.items;
+    ++counters.blocks_tested;
+    return memory_.rejects(memory_.tileOf(x, y), floors_[std::size_t(prim)]);
+  }
+  // A rejected block of n pixels (TraversalUnit::rejectBlock's counts).
+  void rejected(int n, int pipelines) {
+    ++counters.blocks_rejected;
+    counters.pixels_rejected += std::uint64_t(n);
+    const int issueCycles = (n + pipelines - 1) / pipelines;
+    if (issueCycles > p_.lookup_cycles) counters.issue_cycles_saved += std::uint64_t(issueCycles - p_.lookup_cycles);
+  }
+  // A primitive's end: counted when any of its blocks was looked up (TraversalUnit::endPrimitive).
+  void endPrimitive(bool tested, bool accepted) {
+    if (!tested) return;
+    ++counters.primitives_tested;
+    counters.primitives_rejected += !accepted;
+  }
+  HierarchicalZCounters counters;
+  CycleFlags flags;  // busy in a cycle with a lookup or a tile update
+  UnitStats unit;
 
-ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>& setups, const PixelTrace& trace,
-                          ZBufferMemory& zb, PixelCounters& px) {
-  if (!itemClockApplies(cfg)) throw std::logic_error("item clock: not for this configuration");
+ private:
+  struct Write {
+    std::uint64_t due;
+    int x, y;
+    std::uint32_t stored;
+  };
+  // A port's writes not yet in the tile memory, in due order, from `head`.
+  struct Queue {
+    std::vector<Write> writes;
+    std::size_t head = 0;
+    bool waiting() const { return head < writes.size(); }
+    const Write& front() const { return writes[head]; }
+    void pop() {  // the applied writes dropped once they are half the queue (bounded memory)
+      if (++head >= 256 && 2 * head >= writes.size()) {
+        writes.erase(writes.begin(), writes.begin() + std::ptrdiff_t(head));
+        head = 0;
+      }
+    }
+  };
+  // Writes the tile memory with every write due by t, in the order they reach it.
+  [[gnu::noinline]] void applyDue(std::uint64_t t) {
+    const std::size_t P = queues_.size();
+    for (;;) {
+      // The first write to reach the tile memory: the earliest due; at equal dues (one issue
+      // cycle) the first port in that cycle's round-robin order, from (due - latency) mod P.
+      std::size_t best = P;
+      std::uint64_t bestDue = kNone, bestRank = 0;
+      for (std::size_t p = 0; p < P; ++p) {
+        if (!queues_[p].waiting()) continue;
+        const std::uint64_t due = queues_[p].front().due;
+        if (due > bestDue || due > t) continue;
+        const std::uint64_t issue = due - std::uint64_t(p_.update_latency);
+        const std::uint64_t rank = (p + P - issue % P) % P;
+        if (due < bestDue || rank < bestRank) {
+          best = p;
+          bestDue = due;
+          bestRank = rank;
+        }
+      }
+      if (best == P) break;
+      const Write& w = queues_[best].front();
+      memory_.write(w.x, w.y, w.stored);
+      queues_[best].pop();
+    }
+    firstDue_ = kNone;
+    for (const Queue& q : queues_)
+      if (q.waiting()) firstDue_ = std::min(firstDue_, q.front().due);
+  }
+  HierarchicalZUnit::Params p_;
+  HierarchicalZMemory memory_;
+  std::vector<Queue> queues_;          // per Z port
+  std::uint64_t firstDue_ = kNone;     // the earliest due of the queues' writes
+  std::vector<std::uint32_t> floors_;  // each primitive's depth floor, stored (ZBufferMemory::storedValue)
+};
+
+// runItemClock with the hierarchical Z unit (H) or without: one instantiation each, so that
+// the loop without it carries none of its code.
+template <bool H>
+ItemClockRun runItems(const HwConfig& cfg, const std::vector<PrimitiveSetup>& setups, const PixelTrace& trace,
+                      ZBufferMemory& zb, PixelCounters& px) {
   const HostInterfaceUnit::Params hostP = HostInterfaceUnit::Params::from(cfg);
   const SetupUnit::Params setupP = SetupUnit::Params::from(cfg);
   const TraversalUnit::Params travP = TraversalUnit::Params::from(cfg);
@@ -217,6 +327,9 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
     lanes[p].shade.name = "shading_" + std::to_string(p);
   }
   CycleFlags zFlags;
+  std::optional<HierarchicalZ> hizUnit;
+  if constexpr (H) hizUnit.emplace(cfg, setups, zb.width, zb.height);
+  HierarchicalZ* const hiz = hizUnit ? &*hizUnit : nullptr;
   std::vector<std::uint64_t> bankFree(std::size_t(zP.banks), 0);
   // The last cycle in which anything changed (0 also when nothing ever does: the ticked
   // machine then runs one idle cycle); each lane's last events are its last retires.
@@ -233,6 +346,7 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
       l.shadeFlags.count(t, l.shade);
     }
     zFlags.count(t, zunit);
+    if (hiz) hiz->flags.count(t, hiz->unit);
   };
   std::uint64_t counted = 0;  // the cycles counted so far
 
@@ -277,7 +391,10 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
     ++zunit.items;
     zFlags.mark<CycleFlags::kChanged>(issue);
     const std::int64_t z = std::int64_t(o.z);
-    const bool pass = zb.testAndWrite(zb.index(x, y), stored(z), prim, z, int(o.cap));
+    const std::uint32_t value = stored(z);
+    const bool pass = zb.testAndWrite(zb.index(x, y), value, prim, z, int(o.cap));
+    if constexpr (H)
+      if (pass) hiz->noteWrite(issue, p, x, y, value);
     if (pass) ++px.written;
     else ++px.depth_rejected;
     // The read leaves in order after its latency; a pass waits for room on the shading channel.
@@ -304,6 +421,79 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
     l.shadeFlags.lastMark(done);
     l.shadeHolding.add(l.shadeFlags, g, done);
     l.shadeLastDone = done;
+  };
+
+  // Traversal of one primitive's rows from cycle t: returns the cycle after its last. With
+  // the hierarchical Z unit (H), the first pixel of each block of a span (its pixels in one
+  // tile) is looked up first, in the cycle traversal reaches it (before it waits for a
+  // pipeline): a rejected block is skipped and its lookup ends the cycle (TraversalUnit).
+  const auto traverse = [&](int prim, const std::vector<RowSpans>& rows, const TracedPixel* pixels,
+                            int passes, std::uint64_t t) __attribute__((always_inline)) {
+    const int tileMask = H ? hiz->tileSize() - 1 : 0;  // tiles are a power of two wide (HwConfig)
+    bool tested = false, accepted = false;
+    int k = 0;
+    for (const RowSpans& row : rows) {
+      if (t - counted >= 4096) {  // every 4096 cycles or more, at a row's start
+        countBefore(t);
+        counted = t;
+      }
+      // A row starts on a new cycle; up to one pixel a pipeline a cycle, in span order,
+      // stopping at the first pipeline whose channel is full.
+      std::uint64_t used = 0;
+      for (int sp = 0; sp < row.n; ++sp) {
+        const int x1 = row.s[sp].x1;
+        int x = row.s[sp].x0;
+        do {
+          if constexpr (H) {
+            if (x == row.s[sp].x0 || (x & tileMask) == 0) {  // a block begins: its lookup
+              tested = true;
+              if (hiz->rejects(t, prim, x, row.y)) {
+                const int end = std::min(x1, (x | tileMask) + 1);  // the tile's end (x >= 0)
+                hiz->rejected(end - x, int(P));
+                k += end - x;
+                x = end;
+                ++traversal.busy;
+                changedAt(t);
+                ++t;
+                used = 0;
+                continue;
+              }
+              accepted = true;
+            }
+          }
+          const int p = travP.pipelineOf(x, row.y);
+          const std::uint64_t bit = std::uint64_t(1) << p;
+          if (used & bit) {  // a new cycle
+            ++traversal.busy;
+            ++t;
+            used = 0;
+          }
+          const std::uint64_t from = lanes[std::size_t(p)].toPipeline.sendFrom();
+          if (from > t) {  // full: the cycle ends; traversal waits until the slot is freed
+            if (used) {
+              ++traversal.busy;
+              ++t;
+              used = 0;
+            }
+            if (from > t) {
+              traversal.stall += from - t;
+              t = from;
+            }
+          }
+          used |= bit;
+          pixel(t, std::size_t(p), prim, x, row.y, pixels[k++], passes);
+          ++x;
+        } while (x < x1);
+      }
+      // The row's last cycle (unless a rejected block's lookup ended it).
+      if (!H || used) {
+        ++traversal.busy;
+        changedAt(t);
+        ++t;
+      }
+    }
+    if constexpr (H) hiz->endPrimitive(tested, accepted);
+    return t;
   };
 
   // Host interface, setup and traversal, primitive by primitive.
@@ -354,48 +544,7 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
     if (rows.empty()) continue;
     const int passes = trace.clipPasses(prim);
     const TracedPixel* const pixels = &trace.pixel(prim, 0);
-    int k = 0;
-    std::uint64_t t = recv + 1;
-    for (const RowSpans& row : rows) {
-      if (t - counted >= 4096) {  // every 4096 cycles or more, at a row's start
-        countBefore(t);
-        counted = t;
-      }
-      // A row starts on a new cycle; up to one pixel a pipeline a cycle, in span order,
-      // stopping at the first pipeline whose channel is full.
-      std::uint64_t used = 0;
-      for (int sp = 0; sp < row.n; ++sp) {
-        int x = row.s[sp].x0;
-        do {
-          const int p = travP.pipelineOf(x, row.y);
-          const std::uint64_t bit = std::uint64_t(1) << p;
-          if (used & bit) {  // a new cycle
-            ++traversal.busy;
-            ++t;
-            used = 0;
-          }
-          const std::uint64_t from = lanes[std::size_t(p)].toPipeline.sendFrom();
-          if (from > t) {  // full: the cycle ends; traversal waits until the slot is freed
-            if (used) {
-              ++traversal.busy;
-              ++t;
-              used = 0;
-            }
-            if (from > t) {
-              traversal.stall += from - t;
-              t = from;
-            }
-          }
-          used |= bit;
-          pixel(t, std::size_t(p), prim, x, row.y, pixels[k++], passes);
-        } while (++x < row.s[sp].x1);
-      }
-      // The row's last cycle.
-      ++traversal.busy;
-      changedAt(t);
-      ++t;
-    }
-    travFree = t;
+    travFree = traverse(prim, rows, pixels, passes, recv + 1);
   }
 
   // The frame ends after the last cycle in which anything changed.
@@ -417,8 +566,21 @@ ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>
   finish(traversal);
   for (Lane& l : lanes) finish(l.pipe);
   finish(zunit);
+  if (hiz) {
+    finish(hiz->unit);
+    run.hiz = hiz->counters;
+    run.hiz.enabled = true;
+  }
   for (Lane& l : lanes) finish(l.shade);
   return run;
+}
+
+}  // namespace
+
+ItemClockRun runItemClock(const HwConfig& cfg, const std::vector<PrimitiveSetup>& setups, const PixelTrace& trace,
+                          ZBufferMemory& zb, PixelCounters& px) {
+  if (!itemClockApplies(cfg)) throw std::logic_error("item clock: not for this configuration");
+  return cfg.hierarchical_z ? runItems<true>(cfg, setups, trace, zb, px) : runItems<false>(cfg, setups, trace, zb, px);
 }
 
 }  // namespace qacc

@@ -16,12 +16,17 @@
 //    units' counters (busy / stall / idle: a cycle is busy when the unit changed anything,
 //    else a stall when it waited on an output, else busy when it holds work) are counted
 //    from per-cycle flags (a bit a cycle each) behind the traversal.
+//  - with the hierarchical Z unit, a block's lookup happens in the cycle traversal reaches
+//    the block, and sees the Z writes due by then (issued update_latency cycles before or
+//    earlier): every such write comes from a pixel issued earlier, already timed, so the
+//    writes wait in a heap ordered as they reach the tile memory (by due cycle, then by the
+//    Z unit's round-robin order within the cycle they were issued in).
 // One pass over the items: it ends on any input, and needs no deadlock limit (the clock that
 // ticks every cycle reports a million unchanged cycles in a row as a deadlock, so a frame
 // with a longer wait, such as a descriptor of hundreds of clip planes on the slowest bus,
 // has cycles under this clock and none under that one).
-// Applies without the hierarchical Z unit (its lookups see the Z unit's writes by time) and
-// with banks shared by no two ports; elsewhere the engine ticks the units (machine_run.h).
+// Applies with banks shared by no two ports; elsewhere (and in the CSG pass) the engine
+// ticks the units (machine_run.h).
 // The tests compare every counter with the clock that ticks every cycle, on every shipped
 // scene and configuration and under random timings (test_hw_engines.cpp).
 #pragma once
@@ -32,21 +37,24 @@
 #include "hw_model/datapath/primitive_setup.h"
 #include "hw_model/datapath/zbuffer_memory.h"
 #include "hw_model/engines/pixel_trace.h"
+#include "hw_model/report/hierarchical_z_counters.h"
 #include "hw_model/report/hw_stats.h"
 
 namespace qacc {
 
 // Whether the item clock gives the ticked machine's cycles and counters for this
-// configuration (no hierarchical Z unit; zbuffer_banks a multiple of pipelines).
+// configuration (zbuffer_banks a multiple of pipelines).
 bool itemClockApplies(const HwConfig& cfg);
 
 struct ItemClockRun {
   std::uint64_t cycles = 0;
   // The units' counters in the wiring's order (cycle_engine.cpp): host interface, setup,
-  // traversal, the P pixel pipelines, the Z unit, the P shading units.
+  // traversal, the P pixel pipelines, the Z unit, the hierarchical Z unit (when configured),
+  // the P shading units.
   std::vector<UnitStats> units;
   std::uint64_t delivered = 0;  // pixels the shading units delivered
   std::uint64_t culled = 0;     // primitives the setup unit dropped (culled at the host)
+  HierarchicalZCounters hiz;    // the hierarchical Z unit's (enabled with the unit)
 };
 
 // The main pass of `setups` (the csg objects' leaves not visible), its pixels' results from

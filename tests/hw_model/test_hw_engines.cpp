@@ -1,5 +1,6 @@
 // Accelerator engines: hw == hw-cycle bit for bit, thread-count independence, the cycle
 // count of a lone primitive, back-pressure, and accuracy against the reference.
+#include <cstdio>
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -101,7 +102,7 @@ TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCounts) {
     for (const auto& e : fs::directory_iterator(d))
       if (e.path().extension() == ".json" && !leftOutOfSanitizedSweeps(e.path().stem().string()))
         scenes.push_back(e.path());
-  int runs = 0, fastForwarded = 0, csgRuns = 0, itemRuns = 0;
+  int runs = 0, fastForwarded = 0, csgRuns = 0, itemRuns = 0, itemHizRejections = 0;
   for (const fs::path& path : scenes) {
     Scene scene = loadScene(path.string());
     scene.width = 160;
@@ -115,6 +116,7 @@ TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCounts) {
         const std::string what = path.filename().string() + ", " + n + ", " + a.stats.simulator_clock;
         if (clock == MachineClock::Repeating) fastForwarded += a.stats.fast_forwarded > 0;
         itemRuns += a.stats.simulator_clock == "items";
+        itemHizRejections += a.stats.simulator_clock == "items" && a.stats.hiz.blocks_rejected > 0;
         EXPECT_EQ(counts(a.stats), cb) << what;
         expectIdentical(a.fb, b.fb, what);
       }
@@ -126,6 +128,9 @@ TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCounts) {
   EXPECT_GE(csgRuns, 9) << "the CSG pass has its own machine on the same clock";
   EXPECT_GE(fastForwarded, runs / 2) << "the runs must exercise the fast-forward";
   EXPECT_GE(itemRuns, runs / 2) << "the item clock applies to most shipped configurations";
+  EXPECT_GE(itemHizRejections, 5) << "the item clock must time hierarchical Z rejections (default_hiz)";
+  std::printf("shipped: %d runs, %d item-clock runs, %d of them with hierarchical Z rejections\n", runs, itemRuns,
+              itemHizRejections);
 }
 
 TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCountsUnderRandomTimings) {
@@ -142,7 +147,7 @@ TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCountsUnderRandomTimings) {
     scenes.back().height = 48;
   }
   const int trials = kSanitizedBuild ? 8 : 40;
-  int sharedBanks = 0, itemRuns = 0;
+  int sharedBanks = 0, itemRuns = 0, itemHizRejections = 0;
   for (int seed = 1; seed <= trials; ++seed) {
     std::mt19937 rng{std::uint32_t(seed)};
     const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
@@ -175,6 +180,7 @@ TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCountsUnderRandomTimings) {
         const HwRender a = renderHwCycle(scene, cfg, 1, clock);
         const std::string what = scene.name + ", seed " + std::to_string(seed) + ", " + a.stats.simulator_clock;
         itemRuns += a.stats.simulator_clock == "items";
+        itemHizRejections += a.stats.simulator_clock == "items" && a.stats.hiz.blocks_rejected > 0;
         ASSERT_EQ(counts(a.stats), cb) << what;
         expectIdentical(a.fb, b.fb, what);
       }
@@ -182,6 +188,50 @@ TEST(HwEngines, TheClockCountsWhatTickingEveryCycleCountsUnderRandomTimings) {
   }
   EXPECT_GT(sharedBanks, 0) << "some trials must share banks between pipelines (the round-robin decides)";
   EXPECT_GE(itemRuns, trials / 2) << "the item clock must apply in some trials";
+  EXPECT_GE(itemHizRejections, trials / 8) << "the item clock must time hierarchical Z rejections in some trials";
+  std::printf("random timings: %d item-clock runs, %d of them with hierarchical Z rejections\n", itemRuns, itemHizRejections);
+}
+
+TEST(HwEngines, TheItemClockSeesHierarchicalZWritesWhenTickingDoes) {
+  // The item clock times a hierarchical Z lookup by the Z writes due at the tile memory by
+  // the lookup's cycle (item_clock.h). Whether a write lands a cycle early or late shows in
+  // the counters only when it decides a lookup: most often with small tiles and a slow
+  // shading unit whose backpressure spreads the Z writes out. Sphereflake (many small
+  // spheres) under such timings: a lookup that sees only the writes due before its cycle
+  // (not those due in it) differs here in 5 of the 40 trials (seeds 3, 12, 29, 30, 34), one
+  // that sees those due a cycle later too in 6, where the random timings above catch such a
+  // slip in about 2 of 1 000 runs.
+  Scene scene = loadScene(std::string(QACC_SOURCE_DIR) + "/scenes/sphereflake.json");
+  scene.width = 320;
+  scene.height = 240;
+  const int trials = kSanitizedBuild ? 6 : 40;
+  int rejecting = 0;
+  for (int seed = 1; seed <= trials; ++seed) {
+    std::mt19937 rng{std::uint32_t(seed)};
+    const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    HwConfig cfg;
+    cfg.bus_width_bits = 16 << pick(0, 2);
+    cfg.host_fifo_depth = pick(1, 4);
+    cfg.pipelines = 1 << pick(0, 3);
+    cfg.zbuffer_banks = cfg.pipelines * pick(1, 2);  // private banks: the item clock applies
+    cfg.pixel_fifo_depth = pick(1, 8);
+    cfg.zbuffer_read_latency = pick(1, 4);
+    cfg.zbuffer_bank_busy = pick(1, 4);
+    cfg.shading_cycles_per_pixel = pick(3, 4);
+    cfg.shading_latency = pick(1, 20);
+    cfg.hierarchical_z = true;
+    cfg.hiz_tile_size = 4;
+    cfg.hiz_depth_bits = pick(9, 16);
+    checkHwConfig(cfg, "hierarchical Z timing " + std::to_string(seed));
+    const HwRender b = renderHwCycle(scene, cfg, 1, MachineClock::EveryCycle);
+    const HwRender a = renderHwCycle(scene, cfg, 1, MachineClock::Items);
+    const std::string what = "seed " + std::to_string(seed);
+    ASSERT_EQ(a.stats.simulator_clock, "items") << what;
+    EXPECT_EQ(counts(a.stats), counts(b.stats)) << what;
+    expectIdentical(a.fb, b.fb, what);
+    rejecting += a.stats.hiz.blocks_rejected > 0;
+  }
+  EXPECT_EQ(rejecting, trials) << "every trial must reject blocks";
 }
 
 TEST(HwEngines, MinimalAndWideConfigurationsAlsoBitIdentical) {
