@@ -48,6 +48,21 @@ SilhouetteDistance silhouetteDistance(const FrameBuffer& reference, const FrameB
   const int w = reference.width, h = reference.height;
   SilhouetteDistance s;
   s.tolerance = tolerance;
+  if (std::equal(reference.object.begin(), reference.object.end(), test.object.begin())) {
+    // The same ids: the same boundary pixels, each at distance 0 from the other set. The
+    // figures the transforms below would give, without them (a sweep over timing knobs
+    // meets this at every point): both counts the boundary's size, distances 0, and every
+    // reference boundary pixel within any tolerance >= 0.
+    std::size_t n = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) n += onBoundary(reference.object, w, h, x, y);
+    s.reference_boundary = s.test_boundary = n;
+    if (n == 0) return s;
+    s.hausdorff = 0;
+    s.mean = 0;
+    s.within_tolerance = 0.0 <= tolerance ? 1.0 : 0.0;
+    return s;
+  }
   double maxd = 0, sumRef = 0, sumTest = 0;
   std::size_t within = 0;
   // Distances from the boundary pixels of `from` to the boundary of `to`: the boundaries are

@@ -205,6 +205,34 @@ TEST(SilhouetteDistance, IdenticalIsZero) {
   EXPECT_EQ(s.within_tolerance, 1.0);
 }
 
+TEST(SilhouetteDistance, TheSameIdsGiveWhatTheDistanceTransformsGive) {
+  // Equal id buffers take a shortcut (no distance transforms). Background written as -2
+  // instead of -1 changes no boundary pixel (a negative id is never on a boundary, and a
+  // covered pixel's neighbour differs from it either way) but makes the buffers unequal, so
+  // the transforms run: both must give the same figures, bit for bit, at any tolerance.
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int w = 40 + int(rng() % 30), h = 30 + int(rng() % 20);
+    FrameBuffer a(w, h, {0, 0, 0});
+    for (int k = 0; k < trial % 5; ++k) {  // up to four overlapping discs (trial 0: none)
+      const FrameBuffer d = disc(w, h, int(rng() % std::uint32_t(w)), int(rng() % std::uint32_t(h)), 3 + int(rng() % 12));
+      for (std::size_t i = 0; i < a.object.size(); ++i)
+        if (d.object[i] >= 0) a.object[i] = k;
+    }
+    FrameBuffer b = a;
+    for (auto& id : b.object)
+      if (id < 0) id = -2;
+    for (const double tol : {1.0, 0.0, -1.0}) {
+      const SilhouetteDistance same = silhouetteDistance(a, a, tol), full = silhouetteDistance(a, b, tol);
+      EXPECT_EQ(same.reference_boundary, full.reference_boundary) << trial;
+      EXPECT_EQ(same.test_boundary, full.test_boundary) << trial;
+      EXPECT_EQ(same.hausdorff, full.hausdorff) << trial;
+      EXPECT_EQ(same.mean, full.mean) << trial;
+      EXPECT_EQ(same.within_tolerance, full.within_tolerance) << trial << " tolerance " << tol;
+    }
+  }
+}
+
 TEST(SilhouetteDistance, OnePixelShiftIsOne) {
   const FrameBuffer a = disc(64, 48, 30, 20, 12), b = disc(64, 48, 31, 20, 12);
   const SilhouetteDistance s = silhouetteDistance(a, b);
