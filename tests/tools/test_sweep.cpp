@@ -9,8 +9,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -191,6 +193,45 @@ TEST(Sweep, SecondSweepRendersNoReference) {
   // The key changes with the scene's content and size.
   EXPECT_NE(ReferenceCache::key("{}", ".", 96, 72), ReferenceCache::key("{ }", ".", 96, 72));
   EXPECT_NE(ReferenceCache::key("{}", ".", 96, 72), ReferenceCache::key("{}", ".", 96, 73));
+}
+
+TEST(Sweep, TheSameImageReusesItsAccuracyFiguresAndThumbnails) {
+  // An evaluator keeps, per reference, the last image it measured: a point whose image is the
+  // same bit for bit (here: other pipeline counts, a timing knob) takes its figures and
+  // thumbnails from it; one with another image (value_bits 14, then the base again after it)
+  // is measured. Every row, reused or not, must equal the row of an evaluator that measured
+  // that point alone, and every thumbnail must hold the same bytes.
+  const fs::path d = tempDir("reuse");
+  const std::string scene = kSrc + "/scenes/gallery.json";
+  ReferenceCache cache((d / "cache").string());
+  SweepEvaluator ev("hw-cycle", 1, cache);
+  ev.setThumbnails((d / "run").string(), 48);
+  const nlohmann::ordered_json knobs = {{"scene.size", {96, 72}}};
+  std::vector<HwConfig> configs(5);
+  configs[1].pipelines = 2;
+  configs[2].pipelines = 4;
+  configs[3].value_bits = 14;
+  const std::vector<bool> expectReused = {false, true, true, false, false};
+  const auto readFile = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    const std::string name = "item" + std::to_string(i);
+    const nlohmann::ordered_json row = ev.evaluate(configs[i], knobs, scene, name);
+    EXPECT_EQ(row["accuracy_reused"].get<bool>(), expectReused[i]) << name;
+    SweepEvaluator alone("hw-cycle", 1, cache);
+    alone.setThumbnails((d / ("alone" + std::to_string(i))).string(), 48);
+    const nlohmann::ordered_json fresh = alone.evaluate(configs[i], knobs, scene, name);
+    EXPECT_FALSE(fresh["accuracy_reused"].get<bool>());
+    EXPECT_EQ(comparable(nlohmann::json::array({row})), comparable(nlohmann::json::array({fresh}))) << name;
+    for (const char* suffix : {".png", "_err.png"}) {
+      const std::string a = readFile(d / "run" / "renders" / (name + suffix)),
+                        b = readFile(d / ("alone" + std::to_string(i)) / "renders" / (name + suffix));
+      EXPECT_FALSE(a.empty()) << name << suffix;
+      EXPECT_EQ(a, b) << name << suffix;
+    }
+  }
 }
 
 TEST(Autosize, FindsTheExhaustiveOptimumOfASmallGrid) {

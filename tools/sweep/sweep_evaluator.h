@@ -14,6 +14,8 @@
 #include <nlohmann/json.hpp>
 
 #include "hw_model/config/hw_config.h"
+#include "hw_model/report/accuracy_report.h"
+#include "raster/image/frame_buffer.h"
 #include "tools/engines/reference_cache.h"
 #include "tools/sweep/sweep_spec.h"
 
@@ -37,6 +39,20 @@ class SweepEvaluator {
     nlohmann::json doc;
   };
   const Source& source(const std::string& path);
+  // The last image measured against each reference (keyed by the reference's scene text
+  // and size), with that reference, its accuracy report and the thumbnails written for it: a
+  // point whose image and reference are the same, bit for bit (colour, depth and objects:
+  // what the report reads), reuses them instead of measuring again. A sweep over timing knobs
+  // (pipelines, FIFOs, banks, latencies) renders the same image at every point, and its
+  // accuracy line took more host time than the accelerator engine. At most kMeasuredBytes of
+  // frames are kept (an entry's two frames: 31 MB each at 1920x1080).
+  struct Measured {
+    FrameBuffer reference, image;  // without their primitive ids
+    AccuracyReport report;
+    std::string thumbnail, errorMap;  // the files written for it ("" when none)
+  };
+  static constexpr std::size_t kMeasuredBytes = std::size_t(256) << 20;
+  std::map<std::string, Measured> measured_;
   std::string engine_;
   int threads_;
   ReferenceCache& cache_;
