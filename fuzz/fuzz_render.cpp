@@ -108,14 +108,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       !(r.fb.color.data == c.fb.color.data))
     std::abort();
   // The item clock with the hierarchical Z unit (4x4 tiles: lookups that reject at this size),
-  // against ticking every cycle.
+  // against ticking every cycle; the unit rejects only pixels that would fail the Z test, so
+  // the image is the one without it.
   qacc::HwConfig hizCfg;
   hizCfg.hierarchical_z = true;
   hizCfg.hiz_tile_size = 4;
   const qacc::HwRender hi = qacc::renderHwCycle(scene, hizCfg, 1, qacc::MachineClock::Items);
   const qacc::HwRender hc = qacc::renderHwCycle(scene, hizCfg, 1, qacc::MachineClock::EveryCycle);
   if (hi.stats.simulator_clock != "items" || hi.stats.countsJson() != hc.stats.countsJson() ||
-      !(hi.fb.color.data == hc.fb.color.data))
+      !(hi.fb.color.data == hc.fb.color.data) || !(hi.fb.color.data == c.fb.color.data) || hi.fb.object != c.fb.object)
     std::abort();
   tessellateLikeFacets(scene);
   ++counts.drawn;

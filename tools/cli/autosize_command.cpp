@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "tools/cli/commands.h"
+#include "tools/cli/threads_option.h"
 #include "tools/engines/reference_cache.h"
 #include "tools/sweep/autosize.h"
 #include "tools/sweep/sweep_results.h"
@@ -107,7 +108,7 @@ void addAutosizeCommand(CLI::App& app) {
   cmd->add_option("--width", args->width, "Image width (with --height)")->check(CLI::Range(8, 8192));
   cmd->add_option("--height", args->height, "Image height (with --width)")->check(CLI::Range(8, 8192));
   cmd->add_option("--cache", args->cache, "Reference cache directory (default $QACC_CACHE or ~/.cache/qacc)");
-  cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+  addThreadsOption(cmd, args->threads);
   cmd->add_flag("--verbose", args->verbose, "Print every configuration rendered in the cost-ordered walk");
   cmd->add_option("-o,--output", args->output, "Write the configuration found (JSON)");
   cmd->callback([args] { runAutosize(*args); });

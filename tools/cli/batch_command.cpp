@@ -13,6 +13,7 @@
 #include "tools/engines/image_size.h"
 #include "tools/cli/limit_options.h"
 #include "tools/cli/reference_cache_options.h"
+#include "tools/cli/threads_option.h"
 #include "tools/cli/view_cull_option.h"
 #include "tools/engines/render_job.h"
 
@@ -38,7 +39,7 @@ void addBatchCommand(CLI::App& app) {
   cmd->add_option("scenes", args->scenes, "Scene files")->required();
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
   cmd->add_option("--engine", args->engine, "Renderer")->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+  addThreadsOption(cmd, args->threads);
   cmd->add_option("--width", args->width, "Image width override");
   cmd->add_option("--height", args->height, "Image height override");
   cmd->add_flag("!--no-accuracy", args->accuracy, "hw engines: skip the accuracy line (no reference render)");

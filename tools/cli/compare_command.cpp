@@ -30,6 +30,7 @@
 
 #include "tools/cli/commands.h"
 #include "tools/cli/limit_options.h"
+#include "tools/cli/threads_option.h"
 #include "tools/cli/view_cull_option.h"
 #include "tools/compare/compare.h"
 
@@ -50,7 +51,7 @@ void addCompareCommand(CLI::App& app) {
   cmd->add_option("--out", o->out_dir, "Output directory")->capture_default_str();
   cmd->add_option("--shading", o->shading, "Facet shading: gouraud|pixel")->capture_default_str();
   cmd->add_option("--config", o->config_path, "Accelerator configuration JSON");
-  cmd->add_option("--threads", o->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+  addThreadsOption(cmd, o->threads);
   cmd->add_option("--width", o->width, "Image width (with --height)");
   cmd->add_option("--height", o->height, "Image height (with --width)");
   addLimitOptions(cmd, o->limits);

@@ -21,6 +21,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/list_option.h"
 #include "tools/cli/limit_options.h"
+#include "tools/cli/threads_option.h"
 #include "tools/engines/engine.h"
 
 namespace qacc {
@@ -140,7 +141,7 @@ void addReduceCommand(CLI::App& app) {
   cmd->add_option("scene", args->scene, "Scene file")->required();
   cmd->add_option("--levels", args->levels, "Comma-separated Kuhn levels (cubes per axis)");
   cmd->add_option("--engine", args->engine, "Renderer of the pieces: reference|hw|hw-cycle");
-  cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+  addThreadsOption(cmd, args->threads);
   cmd->add_option("--out", args->out, "Write the table as OUT.json and OUT.csv");
   addLimitOptions(cmd, args->limits);
   cmd->callback([args] { runReduce(*args); });

@@ -7,6 +7,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/limit_options.h"
 #include "tools/cli/reference_cache_options.h"
+#include "tools/cli/threads_option.h"
 #include "tools/cli/view_cull_option.h"
 #include "tools/engines/render_job.h"
 
@@ -32,7 +33,7 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_flag("!--no-accuracy", job->options.report_accuracy,
                 "hw engines: skip the accuracy line (no reference render)");
   addReferenceCacheOptions(cmd, job->use_cache, job->cache_dir);
-  cmd->add_option("--threads", job->options.threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+  addThreadsOption(cmd, job->options.threads);
   addLimitOptions(cmd, job->options.limits);
   addViewCullOption(cmd, job->view_cull);
   cmd->callback([job] {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tools/cli/commands.h"
+#include "tools/cli/threads_option.h"
 #include "hw_model/report/stats_file.h"
 #include "tools/report/build_info.h"
 #include "tools/engines/reference_cache.h"
@@ -126,7 +127,7 @@ void addSweepCommand(CLI::App& app) {
   cmd->add_option("--shard", args->shard, "Run shard I of N: the items with item % N == I - 1");
   cmd->add_option("--merge", args->merge, "Merge the result directories of the shards into --out")->expected(1, -1);
   cmd->add_option("--cache", args->cache, "Reference cache directory (default $QACC_CACHE or ~/.cache/qacc)");
-  cmd->add_option("--threads", args->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+  addThreadsOption(cmd, args->threads);
   cmd->add_flag("--no-cache", args->noCache, "Render the reference for every item (no reference cache)");
   cmd->add_flag("!--no-report", args->report, "Do not run tools/plot_sweep.py (plots, report.html)");
   cmd->callback([args] { runSweepCommand(*args); });
