@@ -18,9 +18,10 @@
 //    from per-cycle flags (a bit a cycle each) behind the traversal.
 //  - with the hierarchical Z unit, a block's lookup happens in the cycle traversal reaches
 //    the block, and sees the Z writes due by then (issued update_latency cycles before or
-//    earlier): every such write comes from a pixel issued earlier, already timed, so the
-//    writes wait in a heap ordered as they reach the tile memory (by due cycle, then by the
-//    Z unit's round-robin order within the cycle they were issued in).
+//    earlier): every such write comes from a pixel issued earlier, already timed, so each Z
+//    port's writes wait in a queue in due order, and a lookup applies those due in the order
+//    they reach the tile memory (by due cycle, then by the Z unit's round-robin order within
+//    the cycle they were issued in).
 // One pass over the items: it ends on any input, and needs no deadlock limit (the clock that
 // ticks every cycle reports a million unchanged cycles in a row as a deadlock, so a frame
 // with a longer wait, such as a descriptor of hundreds of clip planes on the slowest bus,

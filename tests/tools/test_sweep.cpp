@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -197,10 +198,10 @@ TEST(Sweep, SecondSweepRendersNoReference) {
 
 TEST(Sweep, TheSameImageReusesItsAccuracyFiguresAndThumbnails) {
   // An evaluator keeps, per reference, the last image it measured: a point whose image is the
-  // same bit for bit (here: other pipeline counts, a timing knob) takes its figures and
-  // thumbnails from it; one with another image (value_bits 14, then the base again after it)
-  // is measured. Every row, reused or not, must equal the row of an evaluator that measured
-  // that point alone, and every thumbnail must hold the same bytes.
+  // same bit for bit (here: 1 and 4 pipelines after the default 2, a timing knob) takes its
+  // figures and thumbnails from it; one with another image (value_bits 14, then the base again
+  // after it) is measured. Every row, reused or not, must equal the row of an evaluator that
+  // measured that point alone, and every thumbnail must hold the same bytes.
   const fs::path d = tempDir("reuse");
   const std::string scene = kSrc + "/scenes/gallery.json";
   ReferenceCache cache((d / "cache").string());
@@ -208,7 +209,7 @@ TEST(Sweep, TheSameImageReusesItsAccuracyFiguresAndThumbnails) {
   ev.setThumbnails((d / "run").string(), 48);
   const nlohmann::ordered_json knobs = {{"scene.size", {96, 72}}};
   std::vector<HwConfig> configs(5);
-  configs[1].pipelines = 2;
+  configs[1].pipelines = 1;
   configs[2].pipelines = 4;
   configs[3].value_bits = 14;
   const std::vector<bool> expectReused = {false, true, true, false, false};
@@ -232,6 +233,32 @@ TEST(Sweep, TheSameImageReusesItsAccuracyFiguresAndThumbnails) {
       EXPECT_EQ(a, b) << name << suffix;
     }
   }
+}
+
+TEST(Sweep, AnImageWithNoRoomBesideThoseKeptIsMeasuredEveryTime) {
+  // Room for one entry: two scenes in turn (a sweep's order), the first keeps its entry and
+  // reuses it, the second has no room and is measured at every point; the figures are the
+  // same either way.
+  const fs::path d = tempDir("reuse_room");
+  ReferenceCache cache((d / "cache").string());
+  const nlohmann::ordered_json knobs = {{"scene.size", {64, 48}}};
+  const std::string a = kSrc + "/scenes/gallery.json", b = kSrc + "/scenes/cylinders.json";
+  SweepEvaluator ev("hw", 1, cache);
+  ev.setMeasuredBytes(2 * std::size_t(64 * 48) * (3 + sizeof(double) + sizeof(std::int32_t)));  // one entry
+  HwConfig cfg;
+  for (int round = 0; round < 3; ++round)
+    for (const std::string& scene : {a, b}) {
+      const nlohmann::ordered_json row = ev.evaluate(cfg, knobs, scene);
+      EXPECT_EQ(row["accuracy_reused"].get<bool>(), scene == a && round > 0) << scene << " round " << round;
+      SweepEvaluator alone("hw", 1, cache);
+      EXPECT_EQ(comparable(nlohmann::json::array({row})),
+                comparable(nlohmann::json::array({alone.evaluate(cfg, knobs, scene)})))
+          << scene;
+    }
+  // No room at all: nothing is kept, nothing reused.
+  SweepEvaluator none("hw", 1, cache);
+  none.setMeasuredBytes(0);
+  for (int round = 0; round < 2; ++round) EXPECT_FALSE(none.evaluate(cfg, knobs, a)["accuracy_reused"].get<bool>());
 }
 
 TEST(Autosize, FindsTheExhaustiveOptimumOfASmallGrid) {

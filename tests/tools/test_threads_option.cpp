@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <string>
 
 #include "tools/cli/threads_option.h"
 
@@ -26,6 +27,19 @@ TEST(ThreadsOption, SetsTheDefaultOfTheOtherParallelLoops) {
       inLoop = omp_get_num_threads();
     }
     EXPECT_EQ(inLoop, n) << "a parallel loop without num_threads";
+  }
+  // In a subcommand (as qacc's commands are), the default is set before its callback runs the
+  // command; the value is read as CLI11 reads it (010 is octal).
+  for (const char* text : {"3", "010"}) {
+    CLI::App app;
+    CLI::App* sub = app.add_subcommand("render");
+    int threads = 0, seen = 0;
+    qacc::addThreadsOption(sub, threads);
+    sub->callback([&] { seen = omp_get_max_threads(); });
+    const char* argv[] = {"qacc", "render", "--threads", text};
+    app.parse(4, const_cast<char**>(argv));
+    EXPECT_EQ(seen, threads) << text;
+    EXPECT_EQ(threads, std::string(text) == "3" ? 3 : 8) << text;
   }
   // A refused value changes nothing.
   omp_set_num_threads(before);

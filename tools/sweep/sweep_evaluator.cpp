@@ -128,24 +128,26 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
   auto memo = measured_.find(refKey);
   const bool reused =
       memo != measured_.end() && sameImage(memo->second.reference, ref) && sameImage(memo->second.image, fb);
+  Measured fresh;  // a measurement with no room in the memo
   if (!reused) {
-    const std::size_t bytes = imageBytes(ref) + imageBytes(fb);
+    // This reference's entry is replaced; the new one is kept only if it fits beside the
+    // others (when it does not, the entries already kept stay: a sweep cycling through more
+    // references than fit still reuses those).
+    if (memo != measured_.end()) measured_.erase(memo);
     std::size_t kept = 0;
-    for (const auto& [k, m] : measured_) kept += k == refKey ? 0 : imageBytes(m.reference) + imageBytes(m.image);
-    if (kept + bytes > kMeasuredBytes) {  // keep this reference's entry only
-      for (auto it = measured_.begin(); it != measured_.end();) it = it->first == refKey ? std::next(it) : measured_.erase(it);
+    for (const auto& [k, m] : measured_) kept += imageBytes(m.reference) + imageBytes(m.image);
+    const bool room = kept + imageBytes(ref) + imageBytes(fb) <= measuredBytes_;
+    Measured& m = room ? measured_[refKey] : fresh;
+    if (room) {
+      m.reference = ref;
+      m.reference.primitive = {};
+      m.image = fb;
+      m.image.primitive = {};
     }
-    Measured& m = measured_[refKey];
-    m.reference = ref;
-    m.reference.primitive = {};
-    m.image = fb;
-    m.image.primitive = {};
     m.report = accuracyReport(ref, fb, scene.camera);
-    m.thumbnail.clear();
-    m.errorMap.clear();
-    memo = measured_.find(refKey);
+    memo = room ? measured_.find(refKey) : measured_.end();
   }
-  Measured& measured = memo->second;
+  Measured& measured = memo != measured_.end() ? memo->second : fresh;
   const AccuracyReport& acc = measured.report;
   row["status"] = "ok";
   for (const auto& [k, v] : acc.fields()) row[k] = jsonNumber(v);

@@ -24,6 +24,9 @@ namespace qacc {
 class SweepEvaluator {
  public:
   SweepEvaluator(std::string engine, int threads, ReferenceCache& cache);
+  // The most bytes of frames kept to reuse an image's accuracy figures (Measured below;
+  // default kMeasuredBytes).
+  void setMeasuredBytes(std::size_t bytes) { measuredBytes_ = bytes; }
   // Thumbnails of each render and its error map go to DIR/renders/NAME{,_err}.png
   // (maxWidth pixels wide); 0 or an empty DIR: none.
   void setThumbnails(const std::string& outDir, int maxWidth);
@@ -45,7 +48,8 @@ class SweepEvaluator {
   // what the report reads), reuses them instead of measuring again. A sweep over timing knobs
   // (pipelines, FIFOs, banks, latencies) renders the same image at every point, and its
   // accuracy line took more host time than the accelerator engine. At most kMeasuredBytes of
-  // frames are kept (an entry's two frames: 31 MB each at 1920x1080).
+  // frames are kept (an entry's two frames: 31 MB each at 1920x1080): an entry that does not fit
+  // beside those kept is not kept (its reference's points are measured every time).
   struct Measured {
     FrameBuffer reference, image;  // without their primitive ids
     AccuracyReport report;
@@ -53,6 +57,7 @@ class SweepEvaluator {
   };
   static constexpr std::size_t kMeasuredBytes = std::size_t(256) << 20;
   std::map<std::string, Measured> measured_;
+  std::size_t measuredBytes_ = kMeasuredBytes;
   std::string engine_;
   int threads_;
   ReferenceCache& cache_;
