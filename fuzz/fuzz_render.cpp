@@ -3,9 +3,9 @@
 // hw-cycle must produce the same image (they are bit-identical by construction); hw-cycle's
 // clocks — the item clock (engines/item_clock.h; the default configuration's, and with the
 // hierarchical Z unit) and the ticking clock that repeats one tick's counts over cycles that
-// cannot differ — must count what ticking every cycle counts (MachineClock::EveryCycle: every count of HwStats::countsJson —
-// cycles, every unit's busy / stall / idle / items, pixel, overflow, hierarchical Z and CSG
-// counters). The facets
+// cannot differ — must count what ticking every cycle counts (MachineClock::EveryCycle:
+// every count of HwStats::countsJson — cycles, every unit's busy / stall / idle / items,
+// pixel, overflow, hierarchical Z and CSG counters). The facets
 // engine is represented by its tessellation (modeling/tessellation, the facets engine's
 // options at a small level) of every accepted scene, whose mesh must be well formed (every
 // index in range, one object / material / primitive index per triangle). Its GL draw

@@ -207,7 +207,7 @@ class HierarchicalZ {
     for (const PrimitiveSetup& s : setups) floors_.push_back(ZBufferMemory::storedValue(s.zFloor, cfg));
     unit.name = "hierarchical_z";
   }
-  int tileSize() const { return p_.tile_size; }
+  const HierarchicalZUnit::Params& params() const { return p_; }
   // A Z write issued by `port` in cycle `issue`: due at the tile memory update_latency later,
   // a cycle in which the unit is busy (its tick writes the tile).
   void noteWrite(std::uint64_t issue, std::size_t port, int x, int y, std::uint32_t stored) {
@@ -226,19 +226,6 @@ class HierarchicalZ {
     ++unit.items;
     ++counters.blocks_tested;
     return memory_.rejects(memory_.tileOf(x, y), floors_[std::size_t(prim)]);
-  }
-  // A rejected block of n pixels (TraversalUnit::rejectBlock's counts).
-  void rejected(int n, int pipelines) {
-    ++counters.blocks_rejected;
-    counters.pixels_rejected += std::uint64_t(n);
-    const int issueCycles = (n + pipelines - 1) / pipelines;
-    if (issueCycles > p_.lookup_cycles) counters.issue_cycles_saved += std::uint64_t(issueCycles - p_.lookup_cycles);
-  }
-  // A primitive's end: counted when any of its blocks was looked up (TraversalUnit::endPrimitive).
-  void endPrimitive(bool tested, bool accepted) {
-    if (!tested) return;
-    ++counters.primitives_tested;
-    counters.primitives_rejected += !accepted;
   }
   HierarchicalZCounters counters;
   CycleFlags flags;  // busy in a cycle with a lookup or a tile update
@@ -346,7 +333,7 @@ ItemClockRun runItems(const HwConfig& cfg, const std::vector<PrimitiveSetup>& se
       l.shadeFlags.count(t, l.shade);
     }
     zFlags.count(t, zunit);
-    if (hiz) hiz->flags.count(t, hiz->unit);
+    if constexpr (H) hiz->flags.count(t, hiz->unit);
   };
   std::uint64_t counted = 0;  // the cycles counted so far
 
@@ -429,7 +416,7 @@ ItemClockRun runItems(const HwConfig& cfg, const std::vector<PrimitiveSetup>& se
   // pipeline): a rejected block is skipped and its lookup ends the cycle (TraversalUnit).
   const auto traverse = [&](int prim, const std::vector<RowSpans>& rows, const TracedPixel* pixels,
                             int passes, std::uint64_t t) __attribute__((always_inline)) {
-    const int tileMask = H ? hiz->tileSize() - 1 : 0;  // tiles are a power of two wide (HwConfig)
+    const int tileMask = H ? hiz->params().tile_size - 1 : 0;  // tiles are a power of two wide (HwConfig)
     bool tested = false, accepted = false;
     int k = 0;
     for (const RowSpans& row : rows) {
@@ -449,7 +436,7 @@ ItemClockRun runItems(const HwConfig& cfg, const std::vector<PrimitiveSetup>& se
               tested = true;
               if (hiz->rejects(t, prim, x, row.y)) {
                 const int end = std::min(x1, (x | tileMask) + 1);  // the tile's end (x >= 0)
-                hiz->rejected(end - x, int(P));
+                hiz->counters.blockRejected(end - x, int(P), hiz->params().lookup_cycles);
                 k += end - x;
                 x = end;
                 ++traversal.busy;
@@ -492,7 +479,7 @@ ItemClockRun runItems(const HwConfig& cfg, const std::vector<PrimitiveSetup>& se
         ++t;
       }
     }
-    if constexpr (H) hiz->endPrimitive(tested, accepted);
+    if constexpr (H) hiz->counters.primitiveDone(tested, accepted);
     return t;
   };
 
@@ -566,7 +553,7 @@ ItemClockRun runItems(const HwConfig& cfg, const std::vector<PrimitiveSetup>& se
   finish(traversal);
   for (Lane& l : lanes) finish(l.pipe);
   finish(zunit);
-  if (hiz) {
+  if constexpr (H) {
     finish(hiz->unit);
     run.hiz = hiz->counters;
     run.hiz.enabled = true;

@@ -20,6 +20,21 @@ struct HierarchicalZCounters {
   std::uint64_t primitives_tested = 0;    // primitives with at least one block looked up
   std::uint64_t primitives_rejected = 0;  // ... all of whose blocks were rejected
   std::uint64_t issue_cycles_saved = 0;   // hw-cycle: the rejected blocks' issue cycles less their lookups
+  // A rejected block of n pixels: its pixels, and the issue cycles it would have taken on
+  // `pipelines` pipelines less its lookup's `lookupCycles` (both clocks count through this).
+  void blockRejected(int n, int pipelines, int lookupCycles) {
+    ++blocks_rejected;
+    pixels_rejected += std::uint64_t(n);
+    const int issueCycles = (n + pipelines - 1) / pipelines;
+    if (issueCycles > lookupCycles) issue_cycles_saved += std::uint64_t(issueCycles - lookupCycles);
+  }
+  // A primitive's end: counted when any of its blocks was looked up, rejected whole when none
+  // was accepted.
+  void primitiveDone(bool tested, bool accepted) {
+    if (!tested) return;
+    ++primitives_tested;
+    primitives_rejected += !accepted;
+  }
   void add(const HierarchicalZCounters& o) {
     blocks_tested += o.blocks_tested;
     blocks_rejected += o.blocks_rejected;

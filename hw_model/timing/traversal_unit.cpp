@@ -13,10 +13,7 @@ TraversalUnit::TraversalUnit(const Params& p, const std::vector<PrimitiveSetup>&
       hizTile_(hiz ? hiz->params().tile_size : 0), floors_(std::move(storedFloors)) {}
 
 void TraversalUnit::endPrimitive() {
-  if (hiz_ && primTested_) {
-    ++hiz_->counters.primitives_tested;
-    hiz_->counters.primitives_rejected += !primAccepted_;
-  }
+  if (hiz_) hiz_->counters.primitiveDone(primTested_, primAccepted_);
   prim_ = -1;
 }
 
@@ -30,11 +27,7 @@ bool TraversalUnit::rejectBlock(std::uint64_t now) {
     return false;
   }
   const int n = end - x_;
-  HierarchicalZCounters& c = hiz_->counters;
-  ++c.blocks_rejected;
-  c.pixels_rejected += std::uint64_t(n);
-  const int issueCycles = (n + p_.pipelines - 1) / p_.pipelines;
-  if (issueCycles > hiz_->params().lookup_cycles) c.issue_cycles_saved += std::uint64_t(issueCycles - hiz_->params().lookup_cycles);
+  hiz_->counters.blockRejected(n, p_.pipelines, hiz_->params().lookup_cycles);
   k_ += n;
   x_ = end;
   blockChecked_ = false;

@@ -15,6 +15,7 @@
 #include "hw_model/engines/cycle_engine.h"
 #include "hw_model/engines/functional_engine.h"
 #include "hw_model/report/cost_model.h"
+#include "hw_model/report/hierarchical_z_counters.h"
 #include "modeling/geometry/natural_quadrics.h"
 #include "modeling/loader/scene_loader.h"
 #include "tests/hw_model/frame_expectations.h"
@@ -96,6 +97,22 @@ void expectConservative(const HierarchicalZMemory& m, const ZBufferMemory& zb, i
 }
 
 }  // namespace
+
+TEST(HierarchicalZ, CountersOfARejectedBlockAndOfAPrimitive) {
+  // Both clocks count through these (TraversalUnit, the item clock).
+  HierarchicalZCounters c;
+  c.blockRejected(8, 2, 1);  // 4 issue cycles, 1 of lookup: 3 saved
+  c.blockRejected(3, 4, 1);  // 1 issue cycle, no saving
+  c.blockRejected(5, 1, 2);  // 5 issue cycles, 2 of lookup
+  EXPECT_EQ(c.blocks_rejected, 3u);
+  EXPECT_EQ(c.pixels_rejected, 16u);
+  EXPECT_EQ(c.issue_cycles_saved, 6u);
+  c.primitiveDone(false, false);  // never looked up: not counted
+  c.primitiveDone(true, true);
+  c.primitiveDone(true, false);
+  EXPECT_EQ(c.primitives_tested, 2u);
+  EXPECT_EQ(c.primitives_rejected, 1u);
+}
 
 TEST(HierarchicalZ, ConfigurationKeysAreStrict) {
   const std::string f = R"({"format": "qacc-hw-config/1", )";

@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cstring>
-#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -129,6 +128,7 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
   const bool reused =
       memo != measured_.end() && sameImage(memo->second.reference, ref) && sameImage(memo->second.image, fb);
   Measured fresh;  // a measurement with no room in the memo
+  Measured* measured = reused ? &memo->second : &fresh;
   if (!reused) {
     // This reference's entry is replaced; the new one is kept only if it fits beside the
     // others (when it does not, the entries already kept stay: a sweep cycling through more
@@ -136,19 +136,16 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
     if (memo != measured_.end()) measured_.erase(memo);
     std::size_t kept = 0;
     for (const auto& [k, m] : measured_) kept += imageBytes(m.reference) + imageBytes(m.image);
-    const bool room = kept + imageBytes(ref) + imageBytes(fb) <= measuredBytes_;
-    Measured& m = room ? measured_[refKey] : fresh;
-    if (room) {
-      m.reference = ref;
-      m.reference.primitive = {};
-      m.image = fb;
-      m.image.primitive = {};
+    if (kept + imageBytes(ref) + imageBytes(fb) <= measuredBytes_) {
+      measured = &measured_[refKey];
+      measured->reference = ref;
+      measured->reference.primitive = {};
+      measured->image = fb;
+      measured->image.primitive = {};
     }
-    m.report = accuracyReport(ref, fb, scene.camera);
-    memo = room ? measured_.find(refKey) : measured_.end();
+    measured->report = accuracyReport(ref, fb, scene.camera);
   }
-  Measured& measured = memo != measured_.end() ? memo->second : fresh;
-  const AccuracyReport& acc = measured.report;
+  const AccuracyReport& acc = measured->report;
   row["status"] = "ok";
   for (const auto& [k, v] : acc.fields()) row[k] = jsonNumber(v);
   row["caps"] = stats.pixels.caps;
@@ -168,14 +165,14 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
     fs::create_directories(dir);
     // The same image against the same reference: the same thumbnails, copied.
     const fs::path thumb = dir / (thumbName + ".png"), err = dir / (thumbName + "_err.png");
-    if (!measured.thumbnail.empty() && fs::exists(measured.thumbnail) && fs::exists(measured.errorMap)) {
-      fs::copy_file(measured.thumbnail, thumb, fs::copy_options::overwrite_existing);
-      fs::copy_file(measured.errorMap, err, fs::copy_options::overwrite_existing);
+    if (!measured->thumbnail.empty() && fs::exists(measured->thumbnail) && fs::exists(measured->errorMap)) {
+      fs::copy_file(measured->thumbnail, thumb, fs::copy_options::overwrite_existing);
+      fs::copy_file(measured->errorMap, err, fs::copy_options::overwrite_existing);
     } else {
       writePng(thumb.string(), thumbnail(fb.color, thumbWidth_));
       writePng(err.string(), errorMapThumbnail(ref, fb, thumbWidth_));
-      measured.thumbnail = thumb.string();
-      measured.errorMap = err.string();
+      measured->thumbnail = thumb.string();
+      measured->errorMap = err.string();
     }
     const std::string refName = "reference_" + src.name + "_" + std::to_string(w) + "x" + std::to_string(h) + ".png";
     if (!fs::exists(dir / refName)) writePng((dir / refName).string(), thumbnail(ref.color, thumbWidth_));
