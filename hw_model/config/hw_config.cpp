@@ -206,6 +206,29 @@ bool isHwWidthKey(const std::string& key) {
   return false;
 }
 
+bool isHwTimingKey(const std::string& key) {
+  // Each is read by timing/ (the units' Params), report/cost_model.cpp, and at most
+  // PixelDatapath's count of clip passes (clip_evaluators: PixelTrace::retime) and the CSG
+  // pass's tile pruning (csg_tile_pruning: the pass runs in every render). Not here although they change
+  // no pixel: hierarchical_z (the setup counts the depth floor's operations when it is on) and
+  // depth_variant (another depth datapath).
+  static const char* timing[] = {"clock_mhz",        "bus_width_bits",       "bus_cycles_per_word", "descriptor_word_bits",
+                                 "host_fifo_depth",  "setup_mad_units",      "setup_fifo_depth",    "pipelines",
+                                 "pixel_fifo_depth", "clip_evaluators",      "sqrt_radix",          "divider_radix",
+                                 "shading_cycles_per_pixel", "shading_latency", "zbuffer_banks",    "zbuffer_read_latency",
+                                 "zbuffer_bank_busy", "csg_tile_pruning",    "hiz_tile_size",       "hiz_depth_bits"};
+  for (const char* t : timing)
+    if (key == t) return true;
+  return false;
+}
+
+std::string hwDatapathKey(const HwConfig& c) {
+  std::string out;
+  for (const auto& [key, field] : fields())
+    if (key != "name" && !isHwTimingKey(key)) out += key + "=" + field.get(c).dump() + "\n";
+  return out;
+}
+
 void setHwConfigKey(HwConfig& c, const std::string& key, const nlohmann::json& value, const std::string& where) {
   const auto f = fields().find(key);
   if (f == fields().end()) throw std::invalid_argument(where + ": unknown accelerator configuration key '" + key + "'");

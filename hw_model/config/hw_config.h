@@ -90,6 +90,15 @@ HwConfig parseHwConfig(const std::string& text, const std::string& file);
 // `qacc autosize` narrows and the cost model prices by width).
 std::vector<std::string> hwConfigKeys();
 bool isHwWidthKey(const std::string& key);
+// Whether a key only says when things happen (clock, bus, FIFO depths, unit counts,
+// latencies, radices, the hierarchical Z unit's tiles): the setup arithmetic, the pixel
+// datapath and the shading of the winners — every bit of the image — never read it, only
+// the timed units and the cost model do. Every other key, and any key added later until it is
+// listed here, counts as datapath.
+bool isHwTimingKey(const std::string& key);
+// The configuration's datapath keys and values ("key=value" lines, every key that is neither
+// a timing key nor the name): two configurations with the same text compute the same bits.
+std::string hwDatapathKey(const HwConfig& c);
 // Sets one key from a JSON value; `where` prefixes the message ("FILE: /json/path").
 // Throws std::invalid_argument for an unknown key or a value out of range.
 void setHwConfigKey(HwConfig& c, const std::string& key, const nlohmann::json& value, const std::string& where);

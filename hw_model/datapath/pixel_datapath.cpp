@@ -61,6 +61,10 @@ PixelDatapath::PixelDatapath(const HwConfig& cfg) : cfg_(cfg) {
 
 PixelDatapath::PixelDatapath(const PrimitiveSetup& s, const HwConfig& cfg) : PixelDatapath(cfg) { load(s); }
 
+int PixelDatapath::clipPassesOf(const PrimitiveSetup& s, const HwConfig& cfg) {
+  return ClipTest::passes(int(s.planes.size()), cfg.clip_evaluators) + (s.solid && !s.facet ? 1 : 0);
+}
+
 void PixelDatapath::load(const PrimitiveSetup& s) {
   s_ = &s;
   delta_ = QuadraticInterpolator(s.delta, cfg_.interp_frac_bits, cfg_.interp_acc_bits);
@@ -76,7 +80,7 @@ void PixelDatapath::load(const PrimitiveSetup& s) {
   hv_.resize(s.planes.size());
   zkv_.resize(s.planes.size());
   narrow_ = !s.facet && fits64(s, cfg_);
-  clipPasses_ = ClipTest::passes(int(s.planes.size()), cfg_.clip_evaluators) + (s.solid && !s.facet ? 1 : 0);
+  clipPasses_ = clipPassesOf(s, cfg_);
   invAbsA_ = s.a != 0 ? 1.0 / double(s.a < 0 ? -s.a : s.a) : 0.0;
   const bool stable = cfg_.depth_variant == DepthVariant::Stable;
   switch (cfg_.rounding) {

@@ -67,6 +67,8 @@ class PixelDatapath {
   // The loaded primitive's passes through the clip unit, the same at every pixel (every
   // PixelOutcome::clipPasses): one per clip_evaluators planes, plus one for a solid's caps.
   int clipPasses() const { return clipPasses_; }
+  // The same for primitive `s` under `cfg`, without loading it.
+  static int clipPassesOf(const PrimitiveSetup& s, const HwConfig& cfg);
   // For a solid quadric (not a facet): {f <= 0} ∩ clip polyhedron ∩ [0, 1] at the current
   // position as up to 2 intervals of positive length, ascending — what a CSG method needs
   // of each operand; the fixed-point form of raster/pixel/solid_intervals.h, from the same

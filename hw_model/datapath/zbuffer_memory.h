@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "hw_model/config/hw_config.h"
@@ -42,6 +43,10 @@ struct ZBufferMemory {
   UninitVector<ZEntry> px;
 
   ZBufferMemory(int w, int h) : width(w), height(h), px(std::size_t(w) * std::size_t(h)) {}
+  // The same records, bit for bit (16 bytes without padding).
+  bool sameRecords(const ZBufferMemory& o) const {
+    return width == o.width && height == o.height && std::memcmp(px.data(), o.px.data(), px.size() * sizeof(ZEntry)) == 0;
+  }
   std::size_t size() const { return px.size(); }
   void clear() { std::fill(px.begin(), px.end(), ZEntry{}); }  // no winner anywhere
   std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }

@@ -30,10 +30,12 @@ namespace {
 
 // The pixel trace and the timed machine over every primitive but the csg objects' leaves,
 // leaving its winners in zb. Everything it builds — the trace (every issued pixel's result:
-// 20 MB for molecule at 1920x1080), the units, the setups copied for a csg scene — is
-// released on return, before the CSG pass and the resolve allocate the frame buffer.
+// 10 MB for molecule at 1920x1080), the units, the setups copied for a csg scene — is
+// released on return, before the CSG pass and the resolve allocate the frame buffer, except
+// the trace when `keep` is given (it is moved there, for DatapathReuse). With `filled` (a
+// trace kept from a render under the same datapath: datapath_reuse.h) no trace is computed.
 void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs, const CsgFrame& csg,
-                  ZBufferMemory& zb, int nt, MachineClock clock, HwStats& st) {
+                  ZBufferMemory& zb, int nt, MachineClock clock, HwStats& st, PixelTrace* filled, PixelTrace* keep) {
   // The leaves of csg objects do not enter this machine: the CSG pass draws them after it
   // (csg_cycle_pass.h), with the scene-order tie rule, so the image equals hw's.
   FrameSetup timedCopy;
@@ -47,7 +49,10 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
   // spans first, then every pixel, by the other threads while this one runs the timing loop
   // (below), or before it on one thread.
   const auto tr0 = std::chrono::steady_clock::now();
-  PixelTrace trace = PixelTrace::plan(timedSetups, cfg, nt);
+  PixelTrace planned;
+  if (filled) filled->retime(timedSetups, cfg);
+  else planned = PixelTrace::plan(timedSetups, cfg, nt);
+  PixelTrace& trace = filled ? *filled : planned;
   st.primitives = fs.setups.size();
   for (const PrimitiveSetup& s : fs.setups) {
     st.visible_primitives += s.visible;
@@ -119,26 +124,30 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
     loopSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0).count();
   };
   const auto sinceTrace = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count(); };
+  if (filled) {
+    runLoop();  // nothing to fill
+  } else {
 #pragma omp parallel num_threads(nt)
-  {
-    // A team of one (no thread to spare) fills the trace first, then runs the loop.
-    if (omp_get_num_threads() == 1) {
-      trace.fillAhead();
-      traceDone = sinceTrace();
-      runLoop();
-    } else if (omp_get_thread_num() == 0) {
-      runLoop();
-    } else {
-      trace.fillAhead();
+    {
+      // A team of one (no thread to spare) fills the trace first, then runs the loop.
+      if (omp_get_num_threads() == 1) {
+        trace.fillAhead();
+        traceDone = sinceTrace();
+        runLoop();
+      } else if (omp_get_thread_num() == 0) {
+        runLoop();
+      } else {
+        trace.fillAhead();
 #pragma omp critical(qacc_trace_done)
-      traceDone = std::max(traceDone, sinceTrace());
+        traceDone = std::max(traceDone, sinceTrace());
+      }
     }
   }
   if (loopError) std::rethrow_exception(loopError);
-  trace.finishFill();
+  if (!filled) trace.finishFill();
   st.overflow.add(trace.overflow);
   st.trace_seconds = traceDone;
-  st.loop_seconds = loopSeconds - trace.waitSeconds();
+  st.loop_seconds = loopSeconds - (filled ? 0.0 : trace.waitSeconds());
   std::uint64_t delivered = 0, culled = 0;
   if (byItems) {
     st.cycles = items.cycles;
@@ -162,11 +171,13 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
   if (culled != st.culled_at_host)
     throw std::logic_error("hw-cycle: setup culled " + std::to_string(culled) + " of " +
                            std::to_string(st.culled_at_host) + " primitives");
+  if (keep) *keep = std::move(planned);
 }
 
 }  // namespace
 
-HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads, MachineClock clock) {
+HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads, MachineClock clock,
+                       DatapathReuse* reuse) {
   const auto t0 = std::chrono::steady_clock::now();
   const int nt = threads > 0 ? threads : omp_get_max_threads();
   HwRender out;
@@ -175,14 +186,31 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads, Mac
   st.priceNeeds(scene);
 
   // The setup arithmetic is computed up front (in parallel); the setup unit's timing is
-  // simulated from each primitive's operation count.
-  const FrameSetup fs = FrameSetup::build(scene, cfg, nt);
+  // simulated from each primitive's operation count. A render under the same datapath kept
+  // in `reuse` gives the setups, the trace and, for the same winners, the frame.
+  DatapathReuse::Entry* kept = reuse ? reuse->find(scene.width, scene.height, cfg) : nullptr;
+  DatapathReuse::Entry fresh;
+  if (!kept) fresh.setup = FrameSetup::build(scene, cfg, nt);
+  const FrameSetup& fs = kept ? kept->setup : fresh.setup;
   st.overflow.add(fs.overflow);
   const CsgFrame csg(scene, cfg, scene.width, scene.height);
   ZBufferMemory zb(scene.width, scene.height);
-  runTimedPass(scene, cfg, fs, csg, zb, nt, clock, st);
+  runTimedPass(scene, cfg, fs, csg, zb, nt, clock, st, kept ? &kept->trace : nullptr, reuse && !kept ? &fresh.trace : nullptr);
   runCsgCyclePass(csg, fs, cfg, scene.width, scene.height, zb, nt, clock, st);
-  out.fb = resolveFrame(scene, cfg, fs, zb, nt, st);
+  if (kept && kept->winners.sameRecords(zb)) {
+    out.fb = kept->frame;
+    st.distinct_written = kept->distinct;
+    st.reused = "setup, pixel trace, frame";
+  } else {
+    out.fb = resolveFrame(scene, cfg, fs, zb, nt, st);
+    if (kept) st.reused = "setup, pixel trace";
+  }
+  if (reuse && !kept) {
+    fresh.winners = std::move(zb);
+    fresh.frame = out.fb;
+    fresh.distinct = st.distinct_written;
+    reuse->keep(scene.width, scene.height, cfg, std::move(fresh));
+  }
   st.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

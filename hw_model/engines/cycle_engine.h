@@ -9,13 +9,16 @@
 // the pixel trace, Z-buffer memory, shading of the final winners once drained): the image
 // is bit-identical to `hw`; this engine only adds time.
 #pragma once
+#include "hw_model/engines/datapath_reuse.h"
 #include "hw_model/engines/functional_engine.h"
 #include "hw_model/engines/machine_clock.h"
 
 namespace qacc {
 
 // `clock`: MachineClock::EveryCycle ticks every cycle (for tests: the same counts, slower).
+// `reuse`: the setups, pixel trace and frame of an earlier render of the same scene under the
+// same datapath are taken from it, and this render's are kept in it (datapath_reuse.h).
 HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads = 0,
-                       MachineClock clock = MachineClock::Items);
+                       MachineClock clock = MachineClock::Items, DatapathReuse* reuse = nullptr);
 
 }  // namespace qacc

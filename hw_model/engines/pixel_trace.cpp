@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <thread>
 
 #include "hw_model/datapath/pixel_datapath.h"
@@ -93,6 +94,12 @@ void PixelTrace::finishFill() {
   for (const OverflowCounters& o : fill_->overflow) overflow.add(o);
   waitSeconds_ = fill_->waitSeconds;
   fill_.reset();  // every primitive is published: awaitPrimitive has nothing left to wait for
+}
+
+void PixelTrace::retime(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg) {
+  if (fill_) throw std::logic_error("PixelTrace::retime: the trace is still being filled");
+  for (std::size_t i = 0; i < setups.size(); ++i)
+    if (setups[i].visible) passes[i] = PixelDatapath::clipPassesOf(setups[i], cfg);
 }
 
 void PixelTrace::waitFor(int prim) const {

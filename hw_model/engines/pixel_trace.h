@@ -82,6 +82,10 @@ struct PixelTrace {
   void awaitPrimitive(int prim) const {
     if (fill_ && !fill_->ready[std::size_t(prim)].load(std::memory_order_acquire)) waitFor(prim);
   }
+  // A filled trace made ready for a configuration with the same datapath (hwDatapathKey) as
+  // the one it was filled under (engines/datapath_reuse.h): its pixels are the same bits, and
+  // only the clip passes follow the new clip_evaluators.
+  void retime(const std::vector<PrimitiveSetup>& setups, const HwConfig& cfg);
   // The wall time awaitPrimitive spent waiting or filling (the reader's thread), seconds.
   double waitSeconds() const { return fill_ ? fill_->waitSeconds : waitSeconds_; }
 

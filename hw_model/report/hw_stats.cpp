@@ -139,6 +139,7 @@ nlohmann::ordered_json toJ(const HwStats& s) {
   j["loop_seconds"] = s.loop_seconds;
   j["loop_cycles_per_second"] = s.loop_seconds > 0 ? double(s.cycles) / s.loop_seconds : 0.0;
   j["trace_seconds"] = s.trace_seconds;
+  if (!s.reused.empty()) j["reused"] = s.reused;
   nlohmann::ordered_json units = nlohmann::ordered_json::array();
   for (const auto& u : s.units)
     units.push_back({{"name", u.name}, {"busy", u.busy}, {"stall", u.stall}, {"idle", u.idle}, {"items", u.items}});
@@ -190,7 +191,7 @@ std::string HwStats::toJson() const { return toJ(*this).dump(2) + "\n"; }
 std::string HwStats::countsJson() const {
   nlohmann::ordered_json j = toJ(*this);
   for (const char* k : {"host_seconds", "host_cycles_per_second", "slowdown", "loop_seconds", "loop_cycles_per_second",
-                        "trace_seconds", "threads", "simulator_clock", "fast_forwarded_cycles"})
+                        "trace_seconds", "threads", "simulator_clock", "fast_forwarded_cycles", "reused"})
     j.erase(k);
   return j.dump(2) + "\n";
 }

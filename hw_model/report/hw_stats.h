@@ -80,7 +80,11 @@ struct HwStats {
   double host_seconds = 0;           // wall time of the render
   double loop_seconds = 0;           // hw-cycle: wall time of the timing loop alone (one core; less its waits for the trace)
   double trace_seconds = 0;          // hw-cycle: wall time of the pixel datapath pass (pixel_trace.h), from planning to
-                                     // the last pixel filled (with threads, beside the loop: the two overlap)
+                                     // the last pixel filled (with threads, beside the loop: the two overlap); 0 when reused
+  // hw-cycle: what the render took from an earlier render of the same scene under the same
+  // datapath (engines/datapath_reuse.h): "setup, pixel trace, frame", "setup, pixel trace"
+  // (its winners differed, so it shaded its own), or empty (computed all).
+  std::string reused;
 
   CostModel cost;                    // silicon cost of the configuration
   SceneNeeds needs;                  // the units the scene uses (priceNeeds)

@@ -200,27 +200,36 @@ TEST(Sweep, TheSameImageReusesItsAccuracyFiguresAndThumbnails) {
   // An evaluator keeps, per reference, the last image it measured: a point whose image is the
   // same bit for bit (here: 1 and 4 pipelines after the default 2, a timing knob) takes its
   // figures and thumbnails from it; one with another image (value_bits 14, then the base again
-  // after it) is measured. Every row, reused or not, must equal the row of an evaluator that
-  // measured that point alone, and every thumbnail must hold the same bytes.
+  // after it) is measured. The timing knobs also take hw-cycle's setups, pixel trace and frame
+  // from the point before (datapath_reused, hw_model/engines/datapath_reuse.h) and the scene
+  // as loaded; the datapath change and the point after it compute theirs, and so does the
+  // point at another size (a scene knob), but not the one after it (a timing knob). Every
+  // row, reused or not, must equal the row of an evaluator that measured that point alone,
+  // and every thumbnail must hold the same bytes.
   const fs::path d = tempDir("reuse");
   const std::string scene = kSrc + "/scenes/gallery.json";
   ReferenceCache cache((d / "cache").string());
   SweepEvaluator ev("hw-cycle", 1, cache);
   ev.setThumbnails((d / "run").string(), 48);
-  const nlohmann::ordered_json knobs = {{"scene.size", {96, 72}}};
-  std::vector<HwConfig> configs(5);
+  const nlohmann::ordered_json small = {{"scene.size", {96, 72}}}, larger = {{"scene.size", {112, 84}}};
+  std::vector<HwConfig> configs(7);
   configs[1].pipelines = 1;
   configs[2].pipelines = 4;
   configs[3].value_bits = 14;
-  const std::vector<bool> expectReused = {false, true, true, false, false};
+  configs[6].zbuffer_banks = 8;
+  const std::vector<bool> expectReused = {false, true, true, false, false, false, true};
+  const std::string all = "setup, pixel trace, frame";
+  const std::vector<std::string> expectDatapath = {"", all, all, "", "", "", all};
   const auto readFile = [](const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
   };
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const std::string name = "item" + std::to_string(i);
+    const nlohmann::ordered_json& knobs = i < 5 ? small : larger;
     const nlohmann::ordered_json row = ev.evaluate(configs[i], knobs, scene, name);
     EXPECT_EQ(row["accuracy_reused"].get<bool>(), expectReused[i]) << name;
+    EXPECT_EQ(row["datapath_reused"].get<std::string>(), expectDatapath[i]) << name;
     SweepEvaluator alone("hw-cycle", 1, cache);
     alone.setThumbnails((d / ("alone" + std::to_string(i))).string(), 48);
     const nlohmann::ordered_json fresh = alone.evaluate(configs[i], knobs, scene, name);

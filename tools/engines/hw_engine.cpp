@@ -14,14 +14,14 @@ namespace qacc {
 std::vector<std::string> hwEngineNames() { return {"hw", "hw-cycle"}; }
 
 FrameBuffer renderWithHwEngine(const std::string& engine, const Scene& scene, const HwConfig& cfg, int threads,
-                               HwStats& stats) {
+                               HwStats& stats, DatapathReuse* reuse) {
   if (engine == "hw") {
     HwRender r = renderHw(scene, cfg, threads);
     stats = r.stats;
     return std::move(r.fb);
   }
   if (engine == "hw-cycle") {
-    HwRender r = renderHwCycle(scene, cfg, threads);
+    HwRender r = renderHwCycle(scene, cfg, threads, MachineClock::Items, reuse);
     stats = r.stats;
     return std::move(r.fb);
   }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hw_model/config/hw_config.h"
+#include "hw_model/engines/datapath_reuse.h"
 #include "hw_model/report/hw_stats.h"
 #include "tools/engines/engine.h"
 
@@ -14,8 +15,9 @@ namespace qacc {
 std::vector<std::string> hwEngineNames();
 // Renders with `engine` if it is an accelerator engine (returns false otherwise).
 bool runHwEngine(const std::string& engine, const Scene& scene, const EngineOptions& options, EngineResult& out);
-// The same, returning the statistics too (for bench).
+// The same, returning the statistics too (for bench). hw-cycle takes what it can from `reuse`
+// and keeps its own there (hw_model/engines/datapath_reuse.h); hw does not use it.
 FrameBuffer renderWithHwEngine(const std::string& engine, const Scene& scene, const HwConfig& cfg, int threads,
-                               HwStats& stats);
+                               HwStats& stats, DatapathReuse* reuse = nullptr);
 
 }  // namespace qacc

@@ -97,53 +97,92 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
     view.width = knobs["scene.size"][0].get<int>();
     view.height = knobs["scene.size"][1].get<int>();
   }
-  Scene scene = parseScene(doc.dump(), scenePath, src.dir, Limits{}, view);
-  if (knobs.contains("scene.size")) {
-    scene.width = view.width;
-    scene.height = view.height;
+  // The scene as rendered: its text with the knobs applied, its directory (the files it
+  // names), the size it is culled at and its tessellation.
+  const auto knob = [&](const char* k) { return knobs.contains(k) ? knobs[k].dump() : std::string("-"); };
+  const std::string sceneKey = src.dir + "\n" + doc.dump() + "\n" + knob("scene.size") + "\n" +
+                               knob("scene.tessellation_level") + "\n" + knob("scene.tessellation_tolerance");
+  // One scene kept per scene file (the last loaded), dropped before another is loaded.
+  auto loaded = scenes_.find(scenePath);
+  if (loaded != scenes_.end() && loaded->second.first != sceneKey) {
+    scenes_.erase(loaded);
+    loaded = scenes_.end();
   }
+  Scene notKept;  // a scene with no room beside those kept
+  const Scene* found = loaded != scenes_.end() ? &loaded->second.second : nullptr;
+  if (!found) {
+    Scene scene = parseScene(doc.dump(), scenePath, src.dir, Limits{}, view);
+    if (knobs.contains("scene.size")) {
+      scene.width = view.width;
+      scene.height = view.height;
+    }
+    if (knobs.contains("scene.tessellation_level") || knobs.contains("scene.tessellation_tolerance")) {
+      TessellationOptions to;
+      if (knobs.contains("scene.tessellation_level")) to.triangles = knobs["scene.tessellation_level"].get<int>();
+      if (knobs.contains("scene.tessellation_tolerance")) to.chord_error = knobs["scene.tessellation_tolerance"].get<double>();
+      scene = facetScene(scene, tessellateScene(scene, to));
+    }
+    const auto bytes = [](const Scene& sc) {
+      std::size_t n = 0;
+      for (const Primitive& p : sc.primitives) n += sizeof(Primitive) + p.clip.size() * sizeof(HalfSpace);
+      return n;
+    };
+    std::size_t kept = 0;
+    for (const auto& [path, entry] : scenes_) kept += bytes(entry.second);
+    if (kept + bytes(scene) <= kSceneBytes) {
+      found = &scenes_.emplace(scenePath, std::make_pair(sceneKey, std::move(scene))).first->second.second;
+    } else {
+      notKept = std::move(scene);
+      found = &notKept;
+    }
+  }
+  const Scene& scene = *found;
   nlohmann::ordered_json row;
   row["scene"] = src.name;
   row["scene.width"] = scene.width;
   row["scene.height"] = scene.height;
   knobColumns(knobs, row);
-  if (knobs.contains("scene.tessellation_level") || knobs.contains("scene.tessellation_tolerance")) {
-    TessellationOptions to;
-    if (knobs.contains("scene.tessellation_level")) to.triangles = knobs["scene.tessellation_level"].get<int>();
-    if (knobs.contains("scene.tessellation_tolerance")) to.chord_error = knobs["scene.tessellation_tolerance"].get<double>();
-    scene = facetScene(scene, tessellateScene(scene, to));
-  }
   row["primitives"] = scene.primitives.size();
 
   const int w = scene.width, h = scene.height;
   const std::size_t rendersBefore = cache_.renders();
-  const FrameBuffer ref = cache_.get(refText, src.dir, w, h, [&] { return parseScene(refText, scenePath, src.dir, Limits{}, ViewCulling{true, w, h}); },
-                                     threads_);
-  const auto t0 = std::chrono::steady_clock::now();
-  HwStats stats;
-  const FrameBuffer fb = renderWithHwEngine(engine_, scene, cfg, threads_, stats);
-  const double hostS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const std::string refKey = std::to_string(w) + "x" + std::to_string(h) + "\n" + src.dir + "\n" + refText;
   auto memo = measured_.find(refKey);
-  const bool reused =
-      memo != measured_.end() && sameImage(memo->second.reference, ref) && sameImage(memo->second.image, fb);
+  // The reference of a kept measurement is this one (the same text, directory and size: the
+  // files it names are read once a run, as the scene's are), without the cache's hashing and
+  // reading; colour, depth and objects are all the report and the thumbnails read.
+  FrameBuffer fetched;  // the reference from the cache, when no kept measurement has it
+  if (memo == measured_.end())
+    fetched = cache_.get(refText, src.dir, w, h, [&] { return parseScene(refText, scenePath, src.dir, Limits{}, ViewCulling{true, w, h}); },
+                         threads_, false);
+  const FrameBuffer* ref = memo != measured_.end() ? &memo->second.reference : &fetched;
+  const auto t0 = std::chrono::steady_clock::now();
+  HwStats stats;
+  reuse_.setScene(scenePath, sceneKey);
+  const FrameBuffer fb = renderWithHwEngine(engine_, scene, cfg, threads_, stats, &reuse_);
+  const double hostS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const bool reused = memo != measured_.end() && sameImage(memo->second.image, fb);
   Measured fresh;  // a measurement with no room in the memo
   Measured* measured = reused ? &memo->second : &fresh;
   if (!reused) {
     // This reference's entry is replaced; the new one is kept only if it fits beside the
     // others (when it does not, the entries already kept stay: a sweep cycling through more
     // references than fit still reuses those).
-    if (memo != measured_.end()) measured_.erase(memo);
+    if (memo != measured_.end()) {
+      fetched = std::move(memo->second.reference);
+      ref = &fetched;
+      measured_.erase(memo);
+    }
     std::size_t kept = 0;
     for (const auto& [k, m] : measured_) kept += imageBytes(m.reference) + imageBytes(m.image);
-    if (kept + imageBytes(ref) + imageBytes(fb) <= measuredBytes_) {
+    if (kept + imageBytes(fetched) + imageBytes(fb) <= measuredBytes_) {
       measured = &measured_[refKey];
-      measured->reference = ref;
-      measured->reference.primitive = {};
+      measured->reference = std::move(fetched);
+      ref = &measured->reference;
       measured->image = fb;
       measured->image.primitive = {};
     }
-    measured->report = accuracyReport(ref, fb, scene.camera);
+    measured->report = accuracyReport(*ref, fb, scene.camera);
   }
   const AccuracyReport& acc = measured->report;
   row["status"] = "ok";
@@ -160,6 +199,7 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
   row["host_seconds"] = hostS;
   row["reference_rendered"] = cache_.renders() > rendersBefore;
   row["accuracy_reused"] = reused;
+  row["datapath_reused"] = stats.reused;
   if (thumbWidth_ > 0 && !thumbName.empty()) {
     const fs::path dir = fs::path(outDir_) / "renders";
     fs::create_directories(dir);
@@ -170,12 +210,12 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
       fs::copy_file(measured->errorMap, err, fs::copy_options::overwrite_existing);
     } else {
       writePng(thumb.string(), thumbnail(fb.color, thumbWidth_));
-      writePng(err.string(), errorMapThumbnail(ref, fb, thumbWidth_));
+      writePng(err.string(), errorMapThumbnail(*ref, fb, thumbWidth_));
       measured->thumbnail = thumb.string();
       measured->errorMap = err.string();
     }
     const std::string refName = "reference_" + src.name + "_" + std::to_string(w) + "x" + std::to_string(h) + ".png";
-    if (!fs::exists(dir / refName)) writePng((dir / refName).string(), thumbnail(ref.color, thumbWidth_));
+    if (!fs::exists(dir / refName)) writePng((dir / refName).string(), thumbnail(ref->color, thumbWidth_));
     row["reference_thumbnail"] = "renders/" + refName;
     row["thumbnail"] = "renders/" + thumbName + ".png";
     row["error_map"] = "renders/" + thumbName + "_err.png";

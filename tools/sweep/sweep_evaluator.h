@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hw_model/config/hw_config.h"
+#include "hw_model/engines/datapath_reuse.h"
 #include "hw_model/report/accuracy_report.h"
 #include "raster/image/frame_buffer.h"
 #include "tools/engines/reference_cache.h"
@@ -42,14 +43,15 @@ class SweepEvaluator {
     nlohmann::json doc;
   };
   const Source& source(const std::string& path);
-  // The last image measured against each reference (keyed by the reference's scene text
-  // and size), with that reference, its accuracy report and the thumbnails written for it: a
-  // point whose image and reference are the same, bit for bit (colour, depth and objects:
-  // what the report reads), reuses them instead of measuring again. A sweep over timing knobs
-  // (pipelines, FIFOs, banks, latencies) renders the same image at every point, and its
-  // accuracy line took more host time than the accelerator engine. At most kMeasuredBytes of
-  // frames are kept (an entry's two frames: 31 MB each at 1920x1080): an entry that does not fit
-  // beside those kept is not kept (its reference's points are measured every time).
+  // The last image measured against each reference (keyed by the reference's scene text,
+  // directory and size), with that reference, its accuracy report and the thumbnails written
+  // for it: the reference is read from the cache once a run, and a point whose image is the
+  // same, bit for bit (colour, depth and objects: what the report reads), reuses the figures
+  // and thumbnails instead of measuring again. A sweep over timing knobs (pipelines, FIFOs,
+  // banks, latencies) renders the same image at every point, and its accuracy line took more
+  // host time than the accelerator engine. At most kMeasuredBytes of frames are kept (an
+  // entry's two frames: 31 MB each at 1920x1080): an entry that does not fit beside those kept
+  // is not kept (its reference's points are read and measured every time).
   struct Measured {
     FrameBuffer reference, image;  // without their primitive ids
     AccuracyReport report;
@@ -57,6 +59,15 @@ class SweepEvaluator {
   };
   static constexpr std::size_t kMeasuredBytes = std::size_t(256) << 20;
   std::map<std::string, Measured> measured_;
+  // hw-cycle's setups, pixel traces and frames, one per scene file (the last rendered, with
+  // its knobs and size): a point that changes only timing keys renders only the timed passes.
+  DatapathReuse reuse_;
+  // The scenes as loaded (knobs applied, culled to the view, tessellated), one per scene file
+  // with the text it was loaded from (knobs, size, tessellation): a point that changes only
+  // the accelerator's configuration does not load its scene again. At most kSceneBytes of
+  // primitives are kept; a scene with no room beside those kept is not kept.
+  static constexpr std::size_t kSceneBytes = std::size_t(256) << 20;
+  std::map<std::string, std::pair<std::string, Scene>> scenes_;
   std::size_t measuredBytes_ = kMeasuredBytes;
   std::string engine_;
   int threads_;

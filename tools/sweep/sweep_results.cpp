@@ -19,7 +19,7 @@ namespace qacc {
 namespace fs = std::filesystem;
 
 bool isHostColumn(const std::string& c) {
-  return c == "host_seconds" || c == "reference_rendered" || c == "accuracy_reused";
+  return c == "host_seconds" || c == "reference_rendered" || c == "accuracy_reused" || c == "datapath_reused";
 }
 
 namespace {
