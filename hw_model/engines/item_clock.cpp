@@ -419,10 +419,23 @@ ItemClockRun runItems(const HwConfig& cfg, const std::vector<PrimitiveSetup>& se
     const int tileMask = H ? hiz->params().tile_size - 1 : 0;  // tiles are a power of two wide (HwConfig)
     bool tested = false, accepted = false;
     int k = 0;
-    for (const RowSpans& row : rows) {
+    const RowSpans* const rowEnd = rows.data() + rows.size();
+    for (const RowSpans* rp = rows.data(); rp != rowEnd; ++rp) {
+      const RowSpans& row = *rp;
       if (t - counted >= 4096) {  // every 4096 cycles or more, at a row's start
         countBefore(t);
         counted = t;
+      }
+      // The Z-buffer records of the row after next, asked of the memory now: a frame's
+      // records (33 MB at 1920x1080) are far from the caches, and a row's first ones missed
+      // them (a fifth of the loop's time in molecule's profile).
+      if (rowEnd - rp > 2) {
+        const RowSpans& ahead = rp[2];
+        for (int sp = 0; sp < ahead.n; ++sp) {
+          const ZEntry* e = &zb.px[zb.index(ahead.s[sp].x0, ahead.y)];
+          const int n = std::min(ahead.s[sp].x1 - ahead.s[sp].x0, 32);
+          for (int i = 0; i < n; i += 4) __builtin_prefetch(e + i);
+        }
       }
       // A row starts on a new cycle; up to one pixel a pipeline a cycle, in span order,
       // stopping at the first pipeline whose channel is full.
