@@ -5,7 +5,8 @@
 // hierarchical Z unit) and the ticking clock that repeats one tick's counts over cycles that
 // cannot differ — must count what ticking every cycle counts (MachineClock::EveryCycle:
 // every count of HwStats::countsJson — cycles, every unit's busy / stall / idle / items,
-// pixel, overflow, hierarchical Z and CSG counters). The facets
+// pixel, overflow, hierarchical Z and CSG counters), and so must a render that reuses the
+// setups, pixel trace and frame of one under other timing keys (DatapathReuse). The facets
 // engine is represented by its tessellation (modeling/tessellation, the facets engine's
 // options at a small level) of every accepted scene, whose mesh must be well formed (every
 // index in range, one object / material / primitive index per triangle). Its GL draw
@@ -117,6 +118,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const qacc::HwRender hc = qacc::renderHwCycle(scene, hizCfg, 1, qacc::MachineClock::EveryCycle);
   if (hi.stats.simulator_clock != "items" || hi.stats.countsJson() != hc.stats.countsJson() ||
       !(hi.fb.color.data == hc.fb.color.data) || !(hi.fb.color.data == c.fb.color.data) || hi.fb.object != c.fb.object)
+    std::abort();
+  // A render that takes the setups, the pixel trace and the frame of the render before it (the
+  // same scene and datapath under other timing keys: engines/datapath_reuse.h) must count and
+  // draw what a render from scratch does.
+  qacc::DatapathReuse reuse;
+  reuse.setScene("fuzz", "fuzz");
+  qacc::renderHwCycle(scene, cfg, 1, qacc::MachineClock::Items, &reuse);
+  qacc::HwConfig timing = cfg;
+  timing.pipelines = 3;
+  timing.zbuffer_banks = 6;
+  timing.clip_evaluators = 1;
+  timing.pixel_fifo_depth = 2;
+  timing.shading_cycles_per_pixel = 2;
+  const qacc::HwRender ru = qacc::renderHwCycle(scene, timing, 1, qacc::MachineClock::Items, &reuse);
+  const qacc::HwRender rf = qacc::renderHwCycle(scene, timing, 1);
+  if (ru.stats.reused != "setup, pixel trace, frame" || ru.stats.countsJson() != rf.stats.countsJson() ||
+      !(ru.fb.color.data == rf.fb.color.data) || ru.fb.object != rf.fb.object)
     std::abort();
   tessellateLikeFacets(scene);
   ++counts.drawn;

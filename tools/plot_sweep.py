@@ -122,10 +122,13 @@ def report(d, res, plots):
         w("</table>")
     w("<h2>Rows</h2><p>Green rows are on a per-scene Pareto front. Thumbnails: the render, its error map "
       "(luma difference as heat; coverage errors painted: wrong object red, pinhole yellow, spurious cyan), "
-      "the reference.</p>")
+      "the reference. host_seconds is the host's time for the accelerator render: a row whose "
+      "datapath_reused is not empty took the setups, pixel trace and frame of an earlier item of the "
+      "same scene and ran only the timed passes, so it is not comparable with the rows that computed "
+      "them.</p>")
     cols = ["item", "label", "scene", "status", "gates_kge", "cycles", "fps", "wrong_percent", "wrong_object",
             "pinholes", "spurious", "caps", "psnr_db", "ssim", "silhouette_hausdorff_px", "silhouette_mean_px",
-            "depth_max_z24", "depth_mean_z24", "overflows", "host_seconds"]
+            "depth_max_z24", "depth_mean_z24", "overflows", "host_seconds", "datapath_reused"]
     w("<table><tr>%s<th>render</th><th>error map</th><th>reference</th></tr>" % "".join("<th>%s</th>" % c for c in cols))
     for r in rows:
         cls = " class='front'" if r["item"] in front_items else ""

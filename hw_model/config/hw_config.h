@@ -92,9 +92,11 @@ std::vector<std::string> hwConfigKeys();
 bool isHwWidthKey(const std::string& key);
 // Whether a key only says when things happen (clock, bus, FIFO depths, unit counts,
 // latencies, radices, the hierarchical Z unit's tiles): the setup arithmetic, the pixel
-// datapath and the shading of the winners — every bit of the image — never read it, only
-// the timed units and the cost model do. Every other key, and any key added later until it is
-// listed here, counts as datapath.
+// datapath's results and the shading of the winners — every bit of the image — do not depend
+// on it. The timed units and the cost model read it; besides them, only counts of work do
+// (clip_evaluators: a primitive's passes through the clip unit, PixelDatapath::clipPassesOf;
+// clip_evaluators and csg_tile_pruning: the CSG pass's jobs, built at every render). Every
+// other key, and any key added later until it is listed here, counts as datapath.
 bool isHwTimingKey(const std::string& key);
 // The configuration's datapath keys and values ("key=value" lines, every key that is neither
 // a timing key nor the name): two configurations with the same text compute the same bits.

@@ -50,6 +50,8 @@ void runTimedPass(const Scene& scene, const HwConfig& cfg, const FrameSetup& fs,
   // (below), or before it on one thread.
   const auto tr0 = std::chrono::steady_clock::now();
   PixelTrace planned;
+  // A kept trace gets this configuration's clip passes (a render that fails after this
+  // leaves them in the entry: every render that reuses it retimes it first).
   if (filled) filled->retime(timedSetups, cfg);
   else planned = PixelTrace::plan(timedSetups, cfg, nt);
   PixelTrace& trace = filled ? *filled : planned;

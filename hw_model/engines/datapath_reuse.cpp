@@ -1,5 +1,8 @@
 #include "hw_model/engines/datapath_reuse.h"
 
+#include <set>
+#include <stdexcept>
+
 namespace qacc {
 
 std::size_t DatapathReuse::Entry::bytes() const {
@@ -11,17 +14,24 @@ std::size_t DatapathReuse::Entry::bytes() const {
   for (const auto& rows : trace.rows) n += rows.size() * sizeof(RowSpans);
   for (const PrimitiveSetup& s : setup.setups)
     n += sizeof(PrimitiveSetup) + s.planes.size() * sizeof(PlaneSetup) + s.pointLights.size() * sizeof(VectorSetup);
+  // The lighting's ROMs: the sRGB table and each specular table once (materials share them).
+  n += setup.lighting.srgb.size();
+  std::set<const std::vector<std::int32_t>*> tables;
+  for (const LightingSetup::MaterialQ& m : setup.lighting.materials)
+    if (m.specular && tables.insert(m.specular.get()).second) n += m.specular->size() * sizeof(std::int32_t);
   return n;
 }
 
 std::string DatapathReuse::scene(int width, int height) const {
+  if (!named_) throw std::logic_error("DatapathReuse: a render before setScene named its scene");
   return std::to_string(width) + "x" + std::to_string(height) + "\n" + content_;
 }
 
 DatapathReuse::Entry* DatapathReuse::find(int width, int height, const HwConfig& cfg) {
+  const std::string wanted = scene(width, height);
   const auto it = entries_.find(slot_);
   if (it == entries_.end()) return nullptr;
-  if (it->second->scene == scene(width, height) && it->second->datapath == hwDatapathKey(cfg)) return it->second.get();
+  if (it->second->scene == wanted && it->second->datapath == hwDatapathKey(cfg)) return it->second.get();
   entries_.erase(it);
   return nullptr;
 }

@@ -4,18 +4,21 @@
 // winners it was shaded from. A render of the same scene under a configuration that differs
 // only in timing keys (isHwTimingKey: clock, bus, FIFOs, pipelines, clip evaluators, banks,
 // latencies, radices, the hierarchical Z unit's tiles) computes the same setups and the same
-// trace bit for bit, so it takes them from here and runs only what timing decides: the
-// timed main pass (Z tests included) and the CSG pass. Its frame is taken from here only
-// when its winners are the same as the kept render's, record for record; otherwise it is
-// shaded. A sweep over timing knobs (sweeps/parallelism.json) thus models each point's
+// trace bit for bit (the clip passes aside: PixelTrace::retime), so it takes them from here
+// and runs only what timing decides: the timed main pass (Z tests included) and the CSG pass.
+// Its winners are the same too (the image does not depend on timing: the engines' tests),
+// and its frame is taken from here only after checking that, record for record; otherwise it
+// is shaded (no test has seen it happen). A sweep over timing knobs (sweeps/parallelism.json) thus models each point's
 // cycles without computing its pixels again.
 //
-// The caller names the scene (setScene): a slot (a scene file, say) and its content, where
-// equal contents must mean the same primitives, lights, camera and background; the engine
-// adds the image size and the datapath key (hwDatapathKey). One entry per slot (the last
-// render of that slot: an entry that does not match is dropped before the render computes
-// its own); at most maxBytes of entries are kept (an entry that does not fit beside those
-// kept is not kept). HwStats::reused says what a render took from here.
+// The caller names the scene (setScene, required before a render): a slot (a scene file, say)
+// and its content, where equal contents must mean the same primitives, lights, camera and
+// background; the engine adds the image size and the datapath key (hwDatapathKey). One
+// entry per slot: the last render of that slot that computed its own (a render that reuses
+// the entry leaves it; one that does not match drops it before computing its own); at most
+// maxBytes of entries are kept (an entry that does not fit beside those kept is not kept,
+// after being built). HwStats::reused says what a render took from here; the sweep shows it
+// as the column datapath_reused. Not thread-safe: one render at a time uses a store.
 #pragma once
 #include <cstddef>
 #include <map>
@@ -38,6 +41,7 @@ class DatapathReuse {
   void setScene(std::string slot, std::string content) {
     slot_ = std::move(slot);
     content_ = std::move(content);
+    named_ = true;
   }
 
   struct Entry {
@@ -48,7 +52,7 @@ class DatapathReuse {
     ZBufferMemory winners{0, 0};  // after the main and the CSG passes
     FrameBuffer frame;      // resolved from `winners`
     std::uint64_t distinct = 0;  // HwStats::distinct_written of that frame
-    std::size_t bytes() const;   // approximate: the frame-sized arrays, the trace, the setups
+    std::size_t bytes() const;   // approximate: the frame-sized arrays, the trace, the setups, the ROMs
   };
   // The slot's entry if it holds this scene at this size under cfg's datapath; otherwise
   // null, and the slot's entry is dropped.
@@ -58,8 +62,9 @@ class DatapathReuse {
   std::size_t entries() const { return entries_.size(); }
 
  private:
-  std::string scene(int width, int height) const;
+  std::string scene(int width, int height) const;  // throws std::logic_error before setScene
   std::string slot_, content_;
+  bool named_ = false;
   std::size_t maxBytes_;
   std::map<std::string, std::unique_ptr<Entry>> entries_;
 };

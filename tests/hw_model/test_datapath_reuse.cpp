@@ -148,6 +148,13 @@ TEST(DatapathReuse, AnEntryWithNoRoomIsNotKept) {
   EXPECT_EQ(renderHwCycle(scene, cfg, 1, MachineClock::Items, &reuse).stats.reused, "");
 }
 
+TEST(DatapathReuse, ARenderBeforeTheSceneIsNamedIsRefused) {
+  // Without a scene name, two scenes of one size and datapath would look the same.
+  const Scene scene = smallScene("torus.json");
+  DatapathReuse reuse;
+  EXPECT_THROW(renderHwCycle(scene, HwConfig{}, 1, MachineClock::Items, &reuse), std::logic_error);
+}
+
 TEST(DatapathReuse, EveryKeyButTheTimingKeysAndTheNameIsInTheDatapathKey) {
   // Each key changed alone: the datapath key changes exactly when the key is not a timing
   // key. A key added to HwConfig is datapath until it is listed as timing.

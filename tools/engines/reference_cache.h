@@ -33,6 +33,7 @@ class ReferenceCache {
                   const std::function<Scene()>& scene, int threads, bool primitiveIds = true);
   // Renders every reference and stores none (measures what the cache saves).
   void disable() { disabled_ = true; }
+  bool disabled() const { return disabled_; }
   std::size_t hits() const { return hits_; }
   std::size_t renders() const { return renders_; }
 

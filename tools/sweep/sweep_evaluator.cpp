@@ -150,18 +150,22 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
   auto memo = measured_.find(refKey);
   // The reference of a kept measurement is this one (the same text, directory and size: the
   // files it names are read once a run, as the scene's are), without the cache's hashing and
-  // reading; colour, depth and objects are all the report and the thumbnails read.
-  FrameBuffer fetched;  // the reference from the cache, when no kept measurement has it
-  if (memo == measured_.end())
+  // reading; colour, depth and objects are all the report and the thumbnails read. Under
+  // --no-cache every item renders its reference, and reuses the kept figures only if both
+  // frames are the same.
+  FrameBuffer fetched;  // the reference from the cache (or rendered), when not the kept one
+  const bool fetch = memo == measured_.end() || cache_.disabled();
+  if (fetch)
     fetched = cache_.get(refText, src.dir, w, h, [&] { return parseScene(refText, scenePath, src.dir, Limits{}, ViewCulling{true, w, h}); },
                          threads_, false);
-  const FrameBuffer* ref = memo != measured_.end() ? &memo->second.reference : &fetched;
+  const FrameBuffer* ref = fetch ? &fetched : &memo->second.reference;
   const auto t0 = std::chrono::steady_clock::now();
   HwStats stats;
   reuse_.setScene(scenePath, sceneKey);
   const FrameBuffer fb = renderWithHwEngine(engine_, scene, cfg, threads_, stats, &reuse_);
   const double hostS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const bool reused = memo != measured_.end() && sameImage(memo->second.image, fb);
+  const bool reused = memo != measured_.end() && sameImage(memo->second.image, fb) &&
+                      (!fetch || sameImage(memo->second.reference, fetched));
   Measured fresh;  // a measurement with no room in the memo
   Measured* measured = reused ? &memo->second : &fresh;
   if (!reused) {
@@ -169,8 +173,10 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
     // others (when it does not, the entries already kept stay: a sweep cycling through more
     // references than fit still reuses those).
     if (memo != measured_.end()) {
-      fetched = std::move(memo->second.reference);
-      ref = &fetched;
+      if (!fetch) {
+        fetched = std::move(memo->second.reference);
+        ref = &fetched;
+      }
       measured_.erase(memo);
     }
     std::size_t kept = 0;
