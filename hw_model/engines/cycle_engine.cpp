@@ -191,13 +191,14 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads, Mac
   // simulated from each primitive's operation count. A render under the same datapath kept
   // in `reuse` gives the setups, the trace and, for the same winners, the frame.
   DatapathReuse::Entry* kept = reuse ? reuse->find(scene.width, scene.height, cfg) : nullptr;
+  const bool keepThis = reuse && !kept && reuse->mayKeep(scene.width, scene.height);
   DatapathReuse::Entry fresh;
   if (!kept) fresh.setup = FrameSetup::build(scene, cfg, nt);
   const FrameSetup& fs = kept ? kept->setup : fresh.setup;
   st.overflow.add(fs.overflow);
   const CsgFrame csg(scene, cfg, scene.width, scene.height);
   ZBufferMemory zb(scene.width, scene.height);
-  runTimedPass(scene, cfg, fs, csg, zb, nt, clock, st, kept ? &kept->trace : nullptr, reuse && !kept ? &fresh.trace : nullptr);
+  runTimedPass(scene, cfg, fs, csg, zb, nt, clock, st, kept ? &kept->trace : nullptr, keepThis ? &fresh.trace : nullptr);
   runCsgCyclePass(csg, fs, cfg, scene.width, scene.height, zb, nt, clock, st);
   if (kept && kept->winners.sameRecords(zb)) {
     out.fb = kept->frame;
@@ -207,7 +208,7 @@ HwRender renderHwCycle(const Scene& scene, const HwConfig& cfg, int threads, Mac
     out.fb = resolveFrame(scene, cfg, fs, zb, nt, st);
     if (kept) st.reused = "setup, pixel trace";
   }
-  if (reuse && !kept) {
+  if (keepThis) {
     fresh.winners = std::move(zb);
     fresh.frame = out.fb;
     fresh.distinct = st.distinct_written;

@@ -16,8 +16,8 @@
 // background; the engine adds the image size and the datapath key (hwDatapathKey). One
 // entry per slot: the last render of that slot that computed its own (a render that reuses
 // the entry leaves it; one that does not match drops it before computing its own); at most
-// maxBytes of entries are kept (an entry that does not fit beside those kept is not kept,
-// after being built). HwStats::reused says what a render took from here; the sweep shows it
+// maxBytes of entries are kept (an entry that does not fit beside those kept is not kept;
+// one whose frame-sized arrays alone do not fit is not even built: mayKeep). HwStats::reused says what a render took from here; the sweep shows it
 // as the column datapath_reused. Not thread-safe: one render at a time uses a store.
 #pragma once
 #include <cstddef>
@@ -57,6 +57,9 @@ class DatapathReuse {
   // The slot's entry if it holds this scene at this size under cfg's datapath; otherwise
   // null, and the slot's entry is dropped.
   Entry* find(int width, int height, const HwConfig& cfg);
+  // Whether an entry of this size could fit beside those kept (its frame-sized arrays alone:
+  // when they do not, the render keeps nothing and frees its trace as without a store).
+  bool mayKeep(int width, int height) const;
   // Keeps `e`, computed for this scene at this size under cfg, in the slot, if it fits.
   void keep(int width, int height, const HwConfig& cfg, Entry&& e);
   std::size_t entries() const { return entries_.size(); }

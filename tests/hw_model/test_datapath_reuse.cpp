@@ -143,9 +143,17 @@ TEST(DatapathReuse, AnEntryWithNoRoomIsNotKept) {
   DatapathReuse reuse(1024);  // bytes: less than one entry
   reuse.setScene("torus", "torus");
   const HwConfig cfg;
+  EXPECT_FALSE(reuse.mayKeep(scene.width, scene.height));
   renderHwCycle(scene, cfg, 1, MachineClock::Items, &reuse);
   EXPECT_EQ(reuse.entries(), 0u);
   EXPECT_EQ(renderHwCycle(scene, cfg, 1, MachineClock::Items, &reuse).stats.reused, "");
+  // Room for the frame-sized arrays but not for the setups and the trace: built, then not kept.
+  const std::size_t frame = std::size_t(scene.width) * std::size_t(scene.height) * (sizeof(ZEntry) + 3 + 8 + 8);
+  DatapathReuse tight(frame + 16);
+  tight.setScene("torus", "torus");
+  EXPECT_TRUE(tight.mayKeep(scene.width, scene.height));
+  renderHwCycle(scene, cfg, 1, MachineClock::Items, &tight);
+  EXPECT_EQ(tight.entries(), 0u);
 }
 
 TEST(DatapathReuse, ARenderBeforeTheSceneIsNamedIsRefused) {
