@@ -36,21 +36,23 @@ DatapathReuse::Entry* DatapathReuse::find(int width, int height, const HwConfig&
   return nullptr;
 }
 
-bool DatapathReuse::mayKeep(int width, int height) const {
+std::size_t DatapathReuse::otherSlotsBytes() const {
   std::size_t kept = 0;
   for (const auto& [slot, entry] : entries_)
-    if (slot != slot_) kept += entry->bytes();  // the slot's own entry is replaced
+    if (slot != slot_) kept += entry->bytes();
+  return kept;
+}
+
+bool DatapathReuse::mayKeep(int width, int height) const {
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
-  return kept + pixels * (sizeof(ZEntry) + 3 + sizeof(double) + 2 * sizeof(std::int32_t)) <= maxBytes_;
+  return otherSlotsBytes() + pixels * (sizeof(ZEntry) + 3 + sizeof(double) + 2 * sizeof(std::int32_t)) <= maxBytes_;
 }
 
 void DatapathReuse::keep(int width, int height, const HwConfig& cfg, Entry&& e) {
   entries_.erase(slot_);
   e.scene = scene(width, height);
   e.datapath = hwDatapathKey(cfg);
-  std::size_t kept = 0;
-  for (const auto& [slot, entry] : entries_) kept += entry->bytes();
-  if (kept + e.bytes() <= maxBytes_) entries_[slot_] = std::make_unique<Entry>(std::move(e));
+  if (otherSlotsBytes() + e.bytes() <= maxBytes_) entries_[slot_] = std::make_unique<Entry>(std::move(e));
 }
 
 }  // namespace qacc

@@ -8,8 +8,8 @@
 // and runs only what timing decides: the timed main pass (Z tests included) and the CSG pass.
 // Its winners are the same too (the image does not depend on timing: the engines' tests),
 // and its frame is taken from here only after checking that, record for record; otherwise it
-// is shaded (no test has seen it happen). A sweep over timing knobs (sweeps/parallelism.json) thus models each point's
-// cycles without computing its pixels again.
+// is shaded (no test has seen it happen). A sweep over timing knobs (sweeps/parallelism.json)
+// thus models each point's cycles without computing its pixels again.
 //
 // The caller names the scene (setScene, required before a render): a slot (a scene file, say)
 // and its content, where equal contents must mean the same primitives, lights, camera and
@@ -17,8 +17,9 @@
 // entry per slot: the last render of that slot that computed its own (a render that reuses
 // the entry leaves it; one that does not match drops it before computing its own); at most
 // maxBytes of entries are kept (an entry that does not fit beside those kept is not kept;
-// one whose frame-sized arrays alone do not fit is not even built: mayKeep). HwStats::reused says what a render took from here; the sweep shows it
-// as the column datapath_reused. Not thread-safe: one render at a time uses a store.
+// one whose frame-sized arrays alone do not fit is not even built: mayKeep). HwStats::reused
+// says what a render took from here; the sweep shows it as the column datapath_reused. Not
+// thread-safe: one render at a time uses a store.
 #pragma once
 #include <cstddef>
 #include <map>
@@ -66,6 +67,7 @@ class DatapathReuse {
 
  private:
   std::string scene(int width, int height) const;  // throws std::logic_error before setScene
+  std::size_t otherSlotsBytes() const;             // the entries kept for the other slots
   std::string slot_, content_;
   bool named_ = false;
   std::size_t maxBytes_;

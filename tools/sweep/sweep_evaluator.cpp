@@ -100,7 +100,8 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
   // The scene as rendered: its text with the knobs applied, its directory (the files it
   // names), the size it is culled at and its tessellation.
   const auto knob = [&](const char* k) { return knobs.contains(k) ? knobs[k].dump() : std::string("-"); };
-  const std::string sceneKey = src.dir + "\n" + doc.dump() + "\n" + knob("scene.size") + "\n" +
+  const std::string sceneText = knobs.contains("scene.reduction_level") ? doc.dump() : refText;
+  const std::string sceneKey = src.dir + "\n" + sceneText + "\n" + knob("scene.size") + "\n" +
                                knob("scene.tessellation_level") + "\n" + knob("scene.tessellation_tolerance");
   // One scene kept per scene file (the last loaded), dropped before another is loaded.
   auto loaded = scenes_.find(scenePath);
@@ -111,7 +112,7 @@ nlohmann::ordered_json SweepEvaluator::evaluate(const HwConfig& cfg, const nlohm
   Scene notKept;  // a scene with no room beside those kept
   const Scene* found = loaded != scenes_.end() ? &loaded->second.second : nullptr;
   if (!found) {
-    Scene scene = parseScene(doc.dump(), scenePath, src.dir, Limits{}, view);
+    Scene scene = parseScene(sceneText, scenePath, src.dir, Limits{}, view);
     if (knobs.contains("scene.size")) {
       scene.width = view.width;
       scene.height = view.height;
